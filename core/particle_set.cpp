@@ -1,0 +1,144 @@
+#include "tide/core/particle_set.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "tide/core/parallel.hpp"
+
+namespace tide {
+namespace {
+
+const char* kind_name(FieldKind kind) {
+  switch (kind) {
+    case FieldKind::scalar:
+      return "scalar";
+    case FieldKind::vector:
+      return "vector";
+    case FieldKind::index:
+      return "index";
+  }
+  return "unknown";
+}
+
+template <class T>
+void gather(std::vector<T>& values, std::vector<T>& scratch, std::span<const Index> order) {
+  scratch.resize(order.size());
+  for_each_particle(order.size(), [&](std::size_t i) { scratch[i] = values[order[i]]; });
+  values.swap(scratch);
+}
+
+}  // namespace
+
+template <int D>
+ParticleSet<D>::ParticleSet() {
+  id_ = add_index("id");
+  position_ = add_vector("position");
+}
+
+template <int D>
+std::size_t ParticleSet<D>::append(std::size_t count) {
+  if (count > std::numeric_limits<Index>::max() - size_)
+    throw std::length_error("a particle set holds at most 2^32 - 1 particles");
+  const std::size_t first = size_;
+  size_ += count;
+  for (auto& values : reals_) values.resize(size_, Real(0));
+  for (auto& values : indices_) values.resize(size_, Index(0));
+  auto ids = (*this)[id_];
+  for (std::size_t i = first; i < size_; ++i) ids[i] = next_id_++;
+  return first;
+}
+
+template <int D>
+const FieldInfo* ParticleSet<D>::find(std::string_view name) const {
+  const auto it = std::find_if(fields_.begin(), fields_.end(), [&](const FieldInfo& f) { return f.name == name; });
+  return it == fields_.end() ? nullptr : &*it;
+}
+
+template <int D>
+bool ParticleSet<D>::has(std::string_view name) const {
+  return find(name) != nullptr;
+}
+
+template <int D>
+const FieldInfo& ParticleSet<D>::require(std::string_view name, FieldKind kind) const {
+  const FieldInfo* field = find(name);
+  if (field == nullptr) throw std::out_of_range("particle set has no field '" + std::string(name) + "'");
+  if (field->kind != kind)
+    throw std::invalid_argument("field '" + std::string(name) + "' is a " + kind_name(field->kind) + " field, not a " +
+                                kind_name(kind) + " field");
+  return *field;
+}
+
+template <int D>
+std::size_t ParticleSet<D>::add(std::string_view name, FieldKind kind) {
+  if (const FieldInfo* existing = find(name)) return require(name, kind).slot;
+  if (name.empty()) throw std::invalid_argument("a field needs a name");
+  FieldInfo info{std::string(name), kind, kind == FieldKind::vector ? D : 1, 0};
+  if (kind == FieldKind::index) {
+    info.slot = indices_.size();
+    indices_.emplace_back(size_, Index(0));
+  } else {
+    info.slot = reals_.size();
+    for (int c = 0; c < info.components; ++c) reals_.emplace_back(size_, Real(0));
+  }
+  fields_.push_back(info);
+  return info.slot;
+}
+
+template <int D>
+ScalarField ParticleSet<D>::add_scalar(std::string_view name) {
+  return {add(name, FieldKind::scalar)};
+}
+template <int D>
+VectorField ParticleSet<D>::add_vector(std::string_view name) {
+  return {add(name, FieldKind::vector)};
+}
+template <int D>
+IndexField ParticleSet<D>::add_index(std::string_view name) {
+  return {add(name, FieldKind::index)};
+}
+template <int D>
+ScalarField ParticleSet<D>::scalar(std::string_view name) const {
+  return {require(name, FieldKind::scalar).slot};
+}
+template <int D>
+VectorField ParticleSet<D>::vector(std::string_view name) const {
+  return {require(name, FieldKind::vector).slot};
+}
+template <int D>
+IndexField ParticleSet<D>::index(std::string_view name) const {
+  return {require(name, FieldKind::index).slot};
+}
+
+template <int D>
+VectorView<D> ParticleSet<D>::operator[](VectorField field) {
+  VectorView<D> view;
+  for (int d = 0; d < D; ++d) view.component[d] = reals_[field.slot + d].data();
+  return view;
+}
+
+template <int D>
+ConstVectorView<D> ParticleSet<D>::operator[](VectorField field) const {
+  ConstVectorView<D> view;
+  for (int d = 0; d < D; ++d) view.component[d] = reals_[field.slot + d].data();
+  return view;
+}
+
+template <int D>
+void ParticleSet<D>::permute(std::span<const Index> order) {
+  if (order.size() > size_) throw std::invalid_argument("permutation is longer than the particle set");
+  for (auto& values : reals_) gather(values, real_scratch_, order);
+  for (auto& values : indices_) gather(values, index_scratch_, order);
+  size_ = order.size();
+}
+
+template <int D>
+std::size_t ParticleSet<D>::bytes_per_particle() const {
+  return reals_.size() * sizeof(Real) + indices_.size() * sizeof(Index);
+}
+
+template class ParticleSet<2>;
+template class ParticleSet<3>;
+
+}  // namespace tide

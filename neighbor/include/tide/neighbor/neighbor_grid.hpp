@@ -1,0 +1,173 @@
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string_view>
+#include <vector>
+
+#include "tide/core/particle_set.hpp"
+#include "tide/core/types.hpp"
+#include "tide/neighbor/pair_sort.hpp"
+
+namespace tide {
+
+/// How the grid finds an occupied cell from its coordinates while it builds the per-cell
+/// neighbour ranges. bench/neighbor_bench measures both.
+enum class CellLookup {
+  hash,  ///< open-addressing table over occupied cells only: memory ∝ particles
+  dense  ///< one slot per cell of the whole domain: memory ∝ domain volume
+};
+
+std::string_view cell_lookup_name(CellLookup lookup);
+
+/// Box the particles live in, and which of its axes wrap around.
+template <int D>
+struct GridDomain {
+  Vector<D> lower = Vector<D>::Zero();
+  Vector<D> upper = Vector<D>::Ones();
+  std::array<bool, D> periodic{};
+};
+
+/// A contiguous run of sorted particles [begin, end) seen through one periodic image: the
+/// neighbour's position is x_j + shift, with shift one of the grid's 3^D image shifts.
+struct CellRange {
+  Index begin = 0;
+  Index end = 0;
+  std::uint32_t shift = 0;
+};
+
+/// Uniform grid of cells at least one support radius wide, whose particles are kept sorted by
+/// the Morton code of their cell. After `update`, every cell is a contiguous index range and
+/// every occupied cell knows the (merged) ranges of its 3^D neighbouring cells.
+///
+/// Domain policy: on a periodic axis, positions are wrapped into [lower, upper). A particle
+/// outside [lower, upper) on a non-periodic axis, or with a non-finite coordinate, is removed
+/// from the set by `update`, which logs a warning and counts it.
+template <int D>
+class NeighborGrid {
+ public:
+  NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort = SortAlgorithm::radix,
+               CellLookup lookup = CellLookup::hash);
+
+  /// Wraps periodic positions, sorts the particles by cell code (one gather per field),
+  /// removes particles outside the domain and rebuilds the cell table. Returns the number of
+  /// particles removed by this call.
+  std::size_t update(ParticleSet<D>& particles);
+
+  /// Calls f(j, x_ij, r2) for every particle j of the set last passed to `update` with
+  /// r2 = |x_i − x_j|² < support², i itself included; x_ij = x_i − x_j with the minimum image
+  /// on periodic axes. `x` is that set's position field.
+  template <class F>
+  void for_each_neighbor(std::size_t i, const ConstVectorView<D>& x, F&& f) const;
+
+  /// The same for an arbitrary point (e.g. a particle of another set, or a probe).
+  template <class F>
+  void for_each_neighbor_of(const Vector<D>& point, const ConstVectorView<D>& x, F&& f) const;
+
+  Real support_radius() const { return support_radius_; }
+  const GridDomain<D>& domain() const { return domain_; }
+  const Vector<D>& cell_size() const { return cell_size_; }
+  const std::array<std::uint32_t, D>& cell_counts() const { return cell_counts_; }
+  std::size_t occupied_cells() const { return cell_codes_.size(); }
+  std::size_t particle_count() const { return particle_cell_.size(); }
+  std::size_t removed_total() const { return removed_total_; }
+  SortAlgorithm sort_algorithm() const { return sort_; }
+  CellLookup cell_lookup() const { return lookup_; }
+
+  /// Bytes the grid keeps (tables and sort workspace), per particle of the last update.
+  std::size_t bytes_per_particle() const;
+
+ private:
+  static constexpr std::uint32_t no_cell = std::numeric_limits<std::uint32_t>::max();
+  static constexpr int stencil_size = D == 2 ? 9 : 27;
+
+  bool cell_of(const Vector<D>& x, std::array<std::int64_t, D>& cell) const;
+  std::array<std::int64_t, D> cell_coordinates(std::size_t slot) const;
+  std::uint64_t code_of(const std::array<std::int64_t, D>& cell) const;
+  std::uint32_t find_cell(const std::array<std::int64_t, D>& cell) const;
+  int stencil_ranges(const std::array<std::int64_t, D>& cell, std::array<CellRange, stencil_size>& out) const;
+  void build_cells(std::size_t n);
+  void build_lookup();
+  void build_ranges();
+
+  GridDomain<D> domain_;
+  Real support_radius_;
+  Real support_squared_;
+  SortAlgorithm sort_;
+  CellLookup lookup_;
+  Vector<D> cell_size_;
+  Vector<D> inverse_cell_size_;
+  std::array<std::uint32_t, D> cell_counts_{};
+  std::uint64_t invalid_code_ = 0;
+  std::array<Vector<D>, stencil_size> shifts_;
+  std::size_t removed_total_ = 0;
+
+  std::vector<std::uint64_t> codes_;
+  PairSortWorkspace sort_workspace_;
+  std::vector<std::uint64_t> cell_codes_;   // occupied cells in Morton order
+  std::vector<Index> cell_start_;           // cell c holds sorted particles [start[c], start[c+1])
+  std::vector<Index> particle_cell_;        // occupied-cell slot of each sorted particle
+  std::vector<std::uint64_t> hash_codes_;   // open addressing: code, or invalid_code_ if empty
+  std::vector<std::uint32_t> hash_slots_;
+  std::vector<std::uint32_t> dense_slots_;  // linear cell index -> slot, or no_cell
+  std::vector<std::uint32_t> range_offset_;  // cell c's neighbour ranges: [offset[c], offset[c+1])
+  std::vector<CellRange> ranges_;
+};
+
+template <int D>
+template <class F>
+void NeighborGrid<D>::for_each_neighbor(std::size_t i, const ConstVectorView<D>& x, F&& f) const {
+  const Vector<D> xi = x[i];
+  const std::uint32_t cell = particle_cell_[i];
+  for (std::uint32_t r = range_offset_[cell]; r < range_offset_[cell + 1]; ++r) {
+    const CellRange range = ranges_[r];
+    const Vector<D> xi_image = xi - shifts_[range.shift];
+    for (Index j = range.begin; j < range.end; ++j) {
+      Vector<D> xij;
+      for (int d = 0; d < D; ++d) xij[d] = xi_image[d] - x.component[d][j];
+      const Real r2 = xij.squaredNorm();
+      if (r2 < support_squared_) f(j, xij, r2);
+    }
+  }
+}
+
+template <int D>
+template <class F>
+void NeighborGrid<D>::for_each_neighbor_of(const Vector<D>& point, const ConstVectorView<D>& x, F&& f) const {
+  Vector<D> wrapped = point;
+  for (int d = 0; d < D; ++d) {
+    if (domain_.periodic[d]) {
+      const Real length = domain_.upper[d] - domain_.lower[d];
+      wrapped[d] -= length * std::floor((wrapped[d] - domain_.lower[d]) / length);
+    }
+  }
+  std::array<std::int64_t, D> cell;
+  for (int d = 0; d < D; ++d) {
+    const Real scaled = (wrapped[d] - domain_.lower[d]) * inverse_cell_size_[d];
+    const Real count = static_cast<Real>(cell_counts_[d]);
+    // Farther than one cell outside a non-periodic side (or not finite): no neighbours.
+    if (!(scaled >= Real(-1) && scaled < count + Real(1))) return;
+    cell[d] = static_cast<std::int64_t>(std::floor(scaled));
+    if (domain_.periodic[d]) cell[d] = std::clamp<std::int64_t>(cell[d], 0, cell_counts_[d] - 1);
+  }
+  std::array<CellRange, stencil_size> stencil;
+  const int count = stencil_ranges(cell, stencil);
+  for (int r = 0; r < count; ++r) {
+    const Vector<D> image = wrapped - shifts_[stencil[r].shift];
+    for (Index j = stencil[r].begin; j < stencil[r].end; ++j) {
+      Vector<D> xij;
+      for (int d = 0; d < D; ++d) xij[d] = image[d] - x.component[d][j];
+      const Real r2 = xij.squaredNorm();
+      if (r2 < support_squared_) f(j, xij, r2);
+    }
+  }
+}
+
+extern template class NeighborGrid<2>;
+extern template class NeighborGrid<3>;
+
+}  // namespace tide

@@ -1,0 +1,287 @@
+#include "tide/neighbor/neighbor_grid.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "tide/core/log.hpp"
+#include "tide/core/parallel.hpp"
+#include "tide/neighbor/morton.hpp"
+
+namespace tide {
+namespace {
+
+// Cells are made this much wider than the support radius, so that rounding in the cell
+// coordinate can never put two particles closer than the support two cells apart.
+constexpr Real cell_margin = Real(1e-5);
+
+// Items per block when the cell table is built; fixed so the table never depends on threads.
+constexpr std::size_t scan_block = std::size_t(1) << 14;
+
+std::uint64_t mix(std::uint64_t code) { return code * 0x9e3779b97f4a7c15ULL; }
+
+}  // namespace
+
+std::string_view cell_lookup_name(CellLookup lookup) { return lookup == CellLookup::hash ? "hash" : "dense"; }
+
+template <int D>
+NeighborGrid<D>::NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort,
+                              CellLookup lookup)
+    : domain_(domain),
+      support_radius_(support_radius),
+      support_squared_(support_radius * support_radius),
+      sort_(sort),
+      lookup_(lookup) {
+  if (!(support_radius > 0) || !std::isfinite(support_radius))
+    throw std::invalid_argument("neighbour grid: support radius must be positive and finite, got " +
+                                std::to_string(support_radius));
+  std::array<std::uint32_t, D> top{};
+  for (int d = 0; d < D; ++d) {
+    const Real length = domain.upper[d] - domain.lower[d];
+    if (!(length > 0) || !std::isfinite(length))
+      throw std::invalid_argument("neighbour grid: domain upper bound must exceed lower bound on axis " +
+                                  std::to_string(d));
+    const Real cells = std::floor(length / (support_radius * (1 + cell_margin)));
+    if (cells >= Real(std::uint64_t(1) << morton_bits_per_axis<D>))
+      throw std::invalid_argument("neighbour grid: too many cells on axis " + std::to_string(d) +
+                                  " for a 64-bit Morton code; enlarge the support or shrink the domain");
+    cell_counts_[d] = static_cast<std::uint32_t>(std::max<Real>(cells, 1));
+    if (domain.periodic[d] && cell_counts_[d] < 3)
+      throw std::invalid_argument("neighbour grid: a periodic axis must be at least 3 support radii long (axis " +
+                                  std::to_string(d) + ")");
+    cell_size_[d] = length / static_cast<Real>(cell_counts_[d]);
+    inverse_cell_size_[d] = Real(1) / cell_size_[d];
+    top[d] = cell_counts_[d] - 1;
+  }
+  invalid_code_ = morton_code<D>(top) + 1;
+
+  // Image shift of each stencil code: digit d (base 3) is 0 (none), 1 (+L) or 2 (−L).
+  for (int s = 0; s < stencil_size; ++s) {
+    int digits = s;
+    for (int d = 0; d < D; ++d, digits /= 3) {
+      const Real length = domain.upper[d] - domain.lower[d];
+      shifts_[s][d] = digits % 3 == 0 ? Real(0) : (digits % 3 == 1 ? length : -length);
+    }
+  }
+}
+
+template <int D>
+bool NeighborGrid<D>::cell_of(const Vector<D>& x, std::array<std::int64_t, D>& cell) const {
+  for (int d = 0; d < D; ++d) {
+    if (!(x[d] >= domain_.lower[d] && x[d] < domain_.upper[d])) return false;
+    const Real scaled = (x[d] - domain_.lower[d]) * inverse_cell_size_[d];
+    cell[d] = std::min<std::int64_t>(static_cast<std::int64_t>(scaled), cell_counts_[d] - 1);
+  }
+  return true;
+}
+
+template <int D>
+std::array<std::int64_t, D> NeighborGrid<D>::cell_coordinates(std::size_t slot) const {
+  const auto cell = morton_decode<D>(cell_codes_[slot]);
+  std::array<std::int64_t, D> coordinates;
+  for (int d = 0; d < D; ++d) coordinates[d] = cell[d];
+  return coordinates;
+}
+
+template <int D>
+std::uint64_t NeighborGrid<D>::code_of(const std::array<std::int64_t, D>& cell) const {
+  std::array<std::uint32_t, D> unsigned_cell;
+  for (int d = 0; d < D; ++d) unsigned_cell[d] = static_cast<std::uint32_t>(cell[d]);
+  return morton_code<D>(unsigned_cell);
+}
+
+template <int D>
+std::uint32_t NeighborGrid<D>::find_cell(const std::array<std::int64_t, D>& cell) const {
+  if (lookup_ == CellLookup::dense) {
+    std::size_t linear = 0;
+    for (int d = D - 1; d >= 0; --d) linear = linear * cell_counts_[d] + static_cast<std::size_t>(cell[d]);
+    return dense_slots_[linear];
+  }
+  const std::uint64_t code = code_of(cell);
+  const std::size_t mask = hash_codes_.size() - 1;
+  const int shift = 64 - std::countr_zero(hash_codes_.size());
+  for (std::size_t h = static_cast<std::size_t>(mix(code) >> shift);; h = (h + 1) & mask) {
+    if (hash_codes_[h] == code) return hash_slots_[h];
+    if (hash_codes_[h] == invalid_code_) return no_cell;
+  }
+}
+
+template <int D>
+int NeighborGrid<D>::stencil_ranges(const std::array<std::int64_t, D>& cell,
+                                    std::array<CellRange, stencil_size>& out) const {
+  int count = 0;
+  for (int s = 0; s < stencil_size; ++s) {
+    std::array<std::int64_t, D> neighbour;
+    std::uint32_t shift = 0;
+    bool inside = true;
+    int digits = s;
+    for (int d = 0, weight = 1; d < D; ++d, digits /= 3, weight *= 3) {
+      const std::int64_t n = cell_counts_[d];
+      std::int64_t c = cell[d] + digits % 3 - 1;
+      if (c < 0 || c >= n) {
+        if (!domain_.periodic[d]) {
+          inside = false;
+          break;
+        }
+        // The neighbour cell is an image across the periodic side: its particles sit at x + L
+        // (wrapped from the top) or x − L (from the bottom).
+        shift += static_cast<std::uint32_t>((c >= n ? 1 : 2) * weight);
+        c = c >= n ? c - n : c + n;
+      }
+      neighbour[d] = c;
+    }
+    if (!inside) continue;
+    const std::uint32_t slot = find_cell(neighbour);
+    if (slot == no_cell) continue;
+    out[count++] = {cell_start_[slot], cell_start_[slot + 1], shift};
+  }
+  // Sort by start and merge runs that follow each other in memory (Morton order makes many
+  // neighbouring cells adjacent), so the inner loops are longer and fewer.
+  std::sort(out.begin(), out.begin() + count, [](const CellRange& a, const CellRange& b) { return a.begin < b.begin; });
+  int merged = 0;
+  for (int r = 0; r < count; ++r) {
+    if (merged > 0 && out[merged - 1].end == out[r].begin && out[merged - 1].shift == out[r].shift) {
+      out[merged - 1].end = out[r].end;
+    } else {
+      out[merged++] = out[r];
+    }
+  }
+  return merged;
+}
+
+template <int D>
+std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
+  const std::size_t n = particles.size();
+  auto x = particles[particles.position()];
+  codes_.resize(n);
+  for_each_particle(n, [&](std::size_t i) {
+    Vector<D> xi = x[i];
+    for (int d = 0; d < D; ++d) {
+      if (!domain_.periodic[d] || !std::isfinite(xi[d])) continue;
+      const Real length = domain_.upper[d] - domain_.lower[d];
+      xi[d] -= length * std::floor((xi[d] - domain_.lower[d]) / length);
+      if (xi[d] >= domain_.upper[d]) xi[d] = domain_.lower[d];  // rounding of values just below lower
+    }
+    x.set(i, xi);
+    std::array<std::int64_t, D> cell;
+    codes_[i] = cell_of(xi, cell) ? code_of(cell) : invalid_code_;
+  });
+  sort_pairs(codes_, sort_, sort_workspace_);
+  const auto& sorted = sort_workspace_.keys;
+  const std::size_t kept =
+      static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), invalid_code_) - sorted.begin());
+  particles.permute(std::span<const Index>(sort_workspace_.order).first(kept));
+  const std::size_t removed = n - kept;
+  removed_total_ += removed;
+  if (removed > 0) {
+    std::ostringstream message;
+    message << removed << " particle(s) left the domain or had a non-finite position and were removed ("
+            << removed_total_ << " so far)";
+    log_warning(message.str());
+  }
+  build_cells(kept);
+  build_lookup();
+  build_ranges();
+  return removed;
+}
+
+template <int D>
+void NeighborGrid<D>::build_cells(std::size_t n) {
+  const auto& sorted = sort_workspace_.keys;
+  const std::size_t blocks = (n + scan_block - 1) / scan_block;
+  std::vector<std::size_t> first_slot(blocks + 1, 0);
+  auto starts_cell = [&](std::size_t i) { return i == 0 || sorted[i] != sorted[i - 1]; };
+  parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; ++b) {
+      std::size_t count = 0;
+      for (std::size_t i = b * scan_block; i < std::min(n, (b + 1) * scan_block); ++i) count += starts_cell(i);
+      first_slot[b + 1] = count;
+    }
+  });
+  for (std::size_t b = 0; b < blocks; ++b) first_slot[b + 1] += first_slot[b];
+  const std::size_t cells = first_slot[blocks];
+  cell_codes_.resize(cells);
+  cell_start_.resize(cells + 1);
+  particle_cell_.resize(n);
+  cell_start_[cells] = static_cast<Index>(n);
+  parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; ++b) {
+      std::size_t slot = first_slot[b];
+      for (std::size_t i = b * scan_block; i < std::min(n, (b + 1) * scan_block); ++i) {
+        if (starts_cell(i)) {
+          cell_codes_[slot] = sorted[i];
+          cell_start_[slot] = static_cast<Index>(i);
+          ++slot;
+        }
+        particle_cell_[i] = static_cast<Index>(slot - 1);
+      }
+    }
+  });
+}
+
+template <int D>
+void NeighborGrid<D>::build_lookup() {
+  const std::size_t cells = cell_codes_.size();
+  if (lookup_ == CellLookup::dense) {
+    std::size_t total = 1;
+    for (int d = 0; d < D; ++d) total *= cell_counts_[d];
+    dense_slots_.assign(total, no_cell);
+    for_each_particle(cells, [&](std::size_t c) {
+      std::size_t linear = 0;
+      const auto cell = morton_decode<D>(cell_codes_[c]);
+      for (int d = D - 1; d >= 0; --d) linear = linear * cell_counts_[d] + cell[d];
+      dense_slots_[linear] = static_cast<std::uint32_t>(c);
+    });
+    return;
+  }
+  const std::size_t capacity = std::bit_ceil(std::max<std::size_t>(2 * cells, 16));
+  hash_codes_.assign(capacity, invalid_code_);
+  hash_slots_.resize(capacity);
+  const std::size_t mask = capacity - 1;
+  const int shift = 64 - std::countr_zero(capacity);
+  // Sequential insertion keeps the table layout independent of the thread count.
+  for (std::size_t c = 0; c < cells; ++c) {
+    std::size_t h = static_cast<std::size_t>(mix(cell_codes_[c]) >> shift);
+    while (hash_codes_[h] != invalid_code_) h = (h + 1) & mask;
+    hash_codes_[h] = cell_codes_[c];
+    hash_slots_[h] = static_cast<std::uint32_t>(c);
+  }
+}
+
+template <int D>
+void NeighborGrid<D>::build_ranges() {
+  const std::size_t cells = cell_codes_.size();
+  range_offset_.resize(cells + 1);
+  range_offset_[0] = 0;
+  for_each_particle(cells, [&](std::size_t c) {
+    std::array<CellRange, stencil_size> stencil;
+    range_offset_[c + 1] = static_cast<std::uint32_t>(stencil_ranges(cell_coordinates(c), stencil));
+  });
+  for (std::size_t c = 0; c < cells; ++c) range_offset_[c + 1] += range_offset_[c];
+  ranges_.resize(range_offset_[cells]);
+  for_each_particle(cells, [&](std::size_t c) {
+    std::array<CellRange, stencil_size> stencil;
+    const int count = stencil_ranges(cell_coordinates(c), stencil);
+    std::copy(stencil.begin(), stencil.begin() + count, ranges_.begin() + range_offset_[c]);
+  });
+}
+
+template <int D>
+std::size_t NeighborGrid<D>::bytes_per_particle() const {
+  const std::size_t n = std::max<std::size_t>(particle_count(), 1);
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  const std::size_t total = bytes(codes_) + bytes(sort_workspace_.keys) + bytes(sort_workspace_.order) +
+                            bytes(sort_workspace_.key_scratch) + bytes(sort_workspace_.order_scratch) +
+                            bytes(sort_workspace_.histogram) + bytes(cell_codes_) + bytes(cell_start_) +
+                            bytes(particle_cell_) + bytes(hash_codes_) + bytes(hash_slots_) +
+                            bytes(dense_slots_) + bytes(range_offset_) + bytes(ranges_);
+  return total / n;
+}
+
+template class NeighborGrid<2>;
+template class NeighborGrid<3>;
+
+}  // namespace tide

@@ -1,0 +1,348 @@
+#include "tide/neighbor/neighbor_grid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "tide/core/log.hpp"
+#include "tide/neighbor/morton.hpp"
+
+namespace tide {
+namespace {
+
+constexpr Real support = Real(0.1);
+
+enum class Cloud { uniform, clustered, lattice, sheet, cell_borders };
+
+std::string cloud_name(Cloud cloud) {
+  switch (cloud) {
+    case Cloud::uniform:
+      return "uniform";
+    case Cloud::clustered:
+      return "clustered";
+    case Cloud::lattice:
+      return "lattice";
+    case Cloud::sheet:
+      return "sheet";
+    case Cloud::cell_borders:
+      return "cell_borders";
+  }
+  return "?";
+}
+
+// Domain [0, 1] x [0, 0.8] (x [0, 0.6]): axes of different lengths, none a multiple of the
+// support, so cells are wider than the support and differ per axis.
+template <int D>
+GridDomain<D> test_domain(bool periodic) {
+  GridDomain<D> domain;
+  domain.lower.setZero();
+  for (int d = 0; d < D; ++d) {
+    domain.upper[d] = Real(1) - Real(0.2) * Real(d);
+    domain.periodic[d] = periodic;
+  }
+  return domain;
+}
+
+template <int D>
+std::vector<Vector<D>> make_cloud(Cloud cloud, const GridDomain<D>& domain, const Vector<D>& cell_size) {
+  std::mt19937_64 random(42 + static_cast<int>(cloud));
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const Vector<D> extent = domain.upper - domain.lower;
+  std::vector<Vector<D>> points;
+  auto inside = [&](const Vector<D>& p) {
+    for (int d = 0; d < D; ++d)
+      if (!(p[d] >= domain.lower[d] && p[d] < domain.upper[d])) return false;
+    return true;
+  };
+  switch (cloud) {
+    case Cloud::uniform:
+      for (int k = 0; k < 2500; ++k) {
+        Vector<D> p;
+        for (int d = 0; d < D; ++d) p[d] = domain.lower[d] + Real(unit(random)) * extent[d];
+        points.push_back(p);
+      }
+      break;
+    case Cloud::clustered:
+      // Gaussian clusters, two of them straddling the domain's corner (periodic images).
+      for (int c = 0; c < 6; ++c) {
+        Vector<D> centre;
+        for (int d = 0; d < D; ++d) centre[d] = c < 2 ? Real(0.01) : Real(unit(random)) * extent[d];
+        for (int k = 0; k < 400; ++k) {
+          Vector<D> p;
+          for (int d = 0; d < D; ++d) p[d] = centre[d] + Real(0.03 * normal(random));
+          if (inside(p)) points.push_back(p);
+        }
+      }
+      break;
+    case Cloud::lattice: {
+      // Spacing support/2: many pairs sit at exactly the support distance (excluded, r < support).
+      const Real spacing = support / 2;
+      std::array<int, D> count;
+      for (int d = 0; d < D; ++d) count[d] = static_cast<int>(extent[d] / spacing);
+      std::array<int, D> k{};
+      while (true) {
+        Vector<D> p;
+        for (int d = 0; d < D; ++d) p[d] = domain.lower[d] + spacing * Real(k[d]);
+        if (inside(p)) points.push_back(p);
+        int d = 0;
+        while (d < D && ++k[d] == count[d]) k[d++] = 0;
+        if (d == D) break;
+      }
+      break;
+    }
+    case Cloud::sheet:
+      // All particles on one plane through the domain, at a cell border.
+      for (int k = 0; k < 2000; ++k) {
+        Vector<D> p;
+        for (int d = 0; d < D; ++d) p[d] = domain.lower[d] + Real(unit(random)) * extent[d];
+        p[D - 1] = domain.lower[D - 1] + 2 * cell_size[D - 1];
+        points.push_back(p);
+      }
+      break;
+    case Cloud::cell_borders:
+      // Every coordinate exactly on a cell border (or one support away from it).
+      for (int k = 0; k < 2500; ++k) {
+        Vector<D> p;
+        for (int d = 0; d < D; ++d) {
+          const int cells = static_cast<int>(std::round(extent[d] / cell_size[d]));
+          const int index = static_cast<int>(unit(random) * cells);
+          p[d] = domain.lower[d] + Real(index) * cell_size[d] + (k % 3 == 0 ? support : Real(0));
+          if (p[d] >= domain.upper[d]) p[d] = domain.lower[d] + Real(index) * cell_size[d];
+        }
+        points.push_back(p);
+      }
+      break;
+  }
+  return points;
+}
+
+template <int D>
+std::vector<Vector<D>> image_shifts(const GridDomain<D>& domain) {
+  std::vector<Vector<D>> shifts{Vector<D>::Zero()};
+  for (int d = 0; d < D; ++d) {
+    if (!domain.periodic[d]) continue;
+    const std::size_t existing = shifts.size();
+    for (std::size_t s = 0; s < existing; ++s) {
+      for (Real sign : {Real(1), Real(-1)}) {
+        Vector<D> shifted = shifts[s];
+        shifted[d] = sign * (domain.upper[d] - domain.lower[d]);
+        shifts.push_back(shifted);
+      }
+    }
+  }
+  return shifts;
+}
+
+// O(N²) reference: ids of all j with |x_i − (x_j + image)| < support for some periodic image,
+// computed with the same floating-point operations as the grid.
+template <int D>
+std::vector<Index> brute_force(const Vector<D>& point, const ParticleSet<D>& set, const GridDomain<D>& domain) {
+  const auto x = set[set.position()];
+  const auto ids = set[set.id()];
+  const auto shifts = image_shifts(domain);
+  std::vector<Index> found;
+  for (std::size_t j = 0; j < set.size(); ++j) {
+    for (const Vector<D>& shift : shifts) {
+      const Vector<D> image = point - shift;
+      Vector<D> xij;
+      for (int d = 0; d < D; ++d) xij[d] = image[d] - x.component[d][j];
+      if (xij.squaredNorm() < support * support) found.push_back(ids[j]);
+    }
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+struct GridCase {
+  int dimension;
+  Cloud cloud;
+  bool periodic;
+  SortAlgorithm sort;
+  CellLookup lookup;
+};
+
+std::string case_name(const testing::TestParamInfo<GridCase>& info) {
+  const GridCase& c = info.param;
+  return std::to_string(c.dimension) + "D_" + cloud_name(c.cloud) + (c.periodic ? "_periodic" : "_open") + "_" +
+         std::string(sort_algorithm_name(c.sort)) + "_" + std::string(cell_lookup_name(c.lookup));
+}
+
+class NeighborGridAgainstBruteForce : public testing::TestWithParam<GridCase> {
+ protected:
+  template <int D>
+  void check() {
+    const GridCase& c = GetParam();
+    const GridDomain<D> domain = test_domain<D>(c.periodic);
+    NeighborGrid<D> grid(domain, support, c.sort, c.lookup);
+    ParticleSet<D> set;
+    const auto points = make_cloud<D>(c.cloud, domain, grid.cell_size());
+    ASSERT_GT(points.size(), 300u);
+    set.append(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) set[set.position()].set(i, points[i]);
+    const auto mass = set.add_scalar("mass");
+    for (std::size_t i = 0; i < set.size(); ++i) set[mass][i] = Real(set[set.id()][i]);
+
+    ASSERT_EQ(grid.update(set), 0u);
+    ASSERT_EQ(set.size(), points.size());
+    const auto x = set[set.position()];
+    const auto ids = set[set.id()];
+    // The sort moved every field together.
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      ASSERT_EQ(set[mass][i], Real(ids[i]));
+      ASSERT_EQ(x[i], points[ids[i]]);
+    }
+
+    std::size_t pairs = 0;
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      std::vector<Index> found;
+      grid.for_each_neighbor(i, x, [&](Index j, const Vector<D>& xij, Real r2) {
+        found.push_back(ids[j]);
+        EXPECT_EQ(r2, xij.squaredNorm());
+      });
+      std::sort(found.begin(), found.end());
+      const auto expected = brute_force<D>(x[i], set, domain);
+      ASSERT_EQ(found, expected) << "particle id " << ids[i];
+      pairs += found.size();
+    }
+    EXPECT_GT(pairs, set.size());  // not only self-pairs: the test exercises real neighbours
+
+    // Cross-set queries, including points up to one support outside a closed domain.
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(-0.1, 1.1);
+    for (int q = 0; q < 300; ++q) {
+      Vector<D> point;
+      for (int d = 0; d < D; ++d)
+        point[d] = domain.lower[d] + Real(unit(random)) * (domain.upper[d] - domain.lower[d]);
+      std::vector<Index> found;
+      grid.for_each_neighbor_of(point, x, [&](Index j, const Vector<D>&, Real) { found.push_back(ids[j]); });
+      std::sort(found.begin(), found.end());
+      Vector<D> wrapped = point;
+      for (int d = 0; d < D; ++d) {
+        if (!domain.periodic[d]) continue;
+        const Real length = domain.upper[d] - domain.lower[d];
+        wrapped[d] -= length * std::floor((wrapped[d] - domain.lower[d]) / length);
+      }
+      ASSERT_EQ(found, brute_force<D>(wrapped, set, domain)) << "query " << q;
+    }
+  }
+};
+
+TEST_P(NeighborGridAgainstBruteForce, FindsExactlyTheBruteForceNeighbours) {
+  if (GetParam().dimension == 2) {
+    check<2>();
+  } else {
+    check<3>();
+  }
+}
+
+std::vector<GridCase> all_cases() {
+  std::vector<GridCase> cases;
+  for (int dimension : {2, 3})
+    for (Cloud cloud : {Cloud::uniform, Cloud::clustered, Cloud::lattice, Cloud::sheet, Cloud::cell_borders})
+      for (bool periodic : {false, true}) {
+        cases.push_back({dimension, cloud, periodic, SortAlgorithm::radix, CellLookup::hash});
+        cases.push_back({dimension, cloud, periodic, SortAlgorithm::comparison, CellLookup::dense});
+      }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Clouds, NeighborGridAgainstBruteForce, testing::ValuesIn(all_cases()), case_name);
+
+TEST(NeighborGrid, RemovesParticlesOutsideTheDomainWithAWarning) {
+  std::vector<std::string> warnings;
+  const LogSink previous = set_log_sink([&](LogLevel level, std::string_view message) {
+    if (level == LogLevel::warning) warnings.emplace_back(message);
+  });
+  GridDomain<2> domain;
+  domain.upper = Vector<2>(1, 1);
+  NeighborGrid<2> grid(domain, support);
+  ParticleSet<2> set;
+  set.append(5);
+  auto x = set[set.position()];
+  x.set(0, Vector<2>(0.5, 0.5));
+  x.set(1, Vector<2>(1.5, 0.5));
+  x.set(2, Vector<2>(0.5, std::numeric_limits<Real>::quiet_NaN()));
+  x.set(3, Vector<2>(0.2, -0.01));
+  x.set(4, Vector<2>(0.99, 0.99));
+  EXPECT_EQ(grid.update(set), 3u);
+  set_log_sink(previous);
+  ASSERT_EQ(set.size(), 2u);
+  EXPECT_EQ(grid.removed_total(), 3u);
+  std::vector<Index> kept(set[set.id()].begin(), set[set.id()].end());
+  std::sort(kept.begin(), kept.end());
+  EXPECT_EQ(kept, (std::vector<Index>{0, 4}));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("3 particle(s)"), std::string::npos) << warnings[0];
+}
+
+TEST(NeighborGrid, WrapsPositionsOnPeriodicAxes) {
+  GridDomain<2> domain;
+  domain.upper = Vector<2>(1, 1);
+  domain.periodic = {true, false};
+  NeighborGrid<2> grid(domain, support);
+  ParticleSet<2> set;
+  set.append(2);
+  set[set.position()].set(0, Vector<2>(1.25, 0.5));
+  set[set.position()].set(1, Vector<2>(-0.25, 0.5));
+  EXPECT_EQ(grid.update(set), 0u);
+  const auto x = set[set.position()];
+  const auto ids = set[set.id()];
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Real expected = ids[i] == 0 ? Real(0.25) : Real(0.75);
+    EXPECT_NEAR(x[i][0], expected, 1e-6);
+  }
+}
+
+TEST(NeighborGrid, RejectsBadGeometry) {
+  GridDomain<3> domain;
+  EXPECT_THROW(NeighborGrid<3>(domain, 0), std::invalid_argument);
+  domain.periodic = {true, false, false};
+  EXPECT_THROW(NeighborGrid<3>(domain, Real(0.4)), std::invalid_argument);  // fewer than 3 periodic cells
+  domain.upper[1] = -1;
+  EXPECT_THROW(NeighborGrid<3>(domain, Real(0.1)), std::invalid_argument);
+}
+
+TEST(Morton, InterleavesBitsAndDecodes) {
+  std::mt19937 random(3);
+  for (int k = 0; k < 1000; ++k) {
+    const std::uint32_t x = random(), y = random();
+    std::uint64_t expected = 0;
+    for (int b = 0; b < 32; ++b) expected |= (std::uint64_t((x >> b) & 1) << (2 * b)) | (std::uint64_t((y >> b) & 1) << (2 * b + 1));
+    EXPECT_EQ(morton_code<2>({x, y}), expected);
+    EXPECT_EQ(morton_decode<2>(expected), (std::array<std::uint32_t, 2>{x, y}));
+    const std::uint32_t a = random() & 0x1fffff, b3 = random() & 0x1fffff, c = random() & 0x1fffff;
+    std::uint64_t expected3 = 0;
+    for (int b = 0; b < 21; ++b)
+      expected3 |= (std::uint64_t((a >> b) & 1) << (3 * b)) | (std::uint64_t((b3 >> b) & 1) << (3 * b + 1)) |
+                   (std::uint64_t((c >> b) & 1) << (3 * b + 2));
+    EXPECT_EQ(morton_code<3>({a, b3, c}), expected3);
+    EXPECT_EQ(morton_decode<3>(expected3), (std::array<std::uint32_t, 3>{a, b3, c}));
+  }
+}
+
+TEST(PairSort, RadixAndComparisonGiveTheSameUniqueOrder) {
+  std::mt19937_64 random(11);
+  std::vector<std::uint64_t> codes(200'000);
+  for (auto& code : codes) code = random() % 5000 + (random() % 2 ? (std::uint64_t(1) << 40) : 0);
+  PairSortWorkspace radix, comparison;
+  sort_pairs(codes, SortAlgorithm::radix, radix);
+  sort_pairs(codes, SortAlgorithm::comparison, comparison);
+  EXPECT_EQ(radix.order, comparison.order);
+  EXPECT_EQ(radix.keys, comparison.keys);
+  for (std::size_t k = 1; k < codes.size(); ++k) {
+    ASSERT_LE(radix.keys[k - 1], radix.keys[k]);
+    if (radix.keys[k - 1] == radix.keys[k]) {
+      ASSERT_LT(radix.order[k - 1], radix.order[k]);
+    }
+    ASSERT_EQ(radix.keys[k], codes[radix.order[k]]);
+  }
+}
+
+}  // namespace
+}  // namespace tide

@@ -1,0 +1,83 @@
+#include "tide/core/particle_set.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <stdexcept>
+#include <vector>
+
+namespace tide {
+namespace {
+
+TEST(ParticleSet, StartsWithIdAndPositionOnly) {
+  ParticleSet<3> set;
+  ASSERT_EQ(set.fields().size(), 2u);
+  EXPECT_EQ(set.fields()[0].name, "id");
+  EXPECT_EQ(set.fields()[1].name, "position");
+  EXPECT_EQ(set.fields()[1].components, 3);
+  EXPECT_EQ(set.bytes_per_particle(), sizeof(Index) + 3 * sizeof(Real));
+}
+
+TEST(ParticleSet, AppendAssignsFreshIdsAndZeroFields) {
+  ParticleSet<2> set;
+  const auto density = set.add_scalar("density");
+  set.append(3);
+  set[density][1] = 5;
+  EXPECT_EQ(set.append(2), 3u);
+  ASSERT_EQ(set.size(), 5u);
+  const auto ids = set[set.id()];
+  for (Index i = 0; i < 5; ++i) EXPECT_EQ(ids[i], i);
+  EXPECT_EQ(set[density][1], 5);
+  EXPECT_EQ(set[density][4], 0);
+}
+
+TEST(ParticleSet, FieldsAreCreatedOnceAndTyped) {
+  ParticleSet<3> set;
+  const auto a = set.add_vector("velocity");
+  const auto b = set.add_vector("velocity");
+  EXPECT_EQ(a.slot, b.slot);
+  EXPECT_THROW(set.add_scalar("velocity"), std::invalid_argument);
+  EXPECT_THROW(set.scalar("pressure"), std::out_of_range);
+  EXPECT_TRUE(set.has("velocity"));
+  EXPECT_FALSE(set.has("pressure"));
+}
+
+// Every field, of every kind, must follow the same permutation, and dropped particles vanish.
+TEST(ParticleSet, PermuteKeepsEveryFieldConsistent) {
+  ParticleSet<3> set;
+  const auto mass = set.add_scalar("mass");
+  const auto velocity = set.add_vector("velocity");
+  const auto phase = set.add_index("phase");
+  constexpr std::size_t n = 10000;
+  set.append(n);
+  auto x = set[set.position()];
+  auto v = set[velocity];
+  for (std::size_t i = 0; i < n; ++i) {
+    const Real s = static_cast<Real>(i);
+    x.set(i, Vector<3>(s, 2 * s, 3 * s));
+    v.set(i, Vector<3>(-s, -2 * s, -3 * s));
+    set[mass][i] = s + Real(0.5);
+    set[phase][i] = static_cast<Index>(i % 7);
+  }
+  std::vector<Index> order(n);
+  std::iota(order.begin(), order.end(), Index(0));
+  for (std::size_t i = 0; i < n; ++i) std::swap(order[i], order[(i * 7919) % n]);
+  order.resize(n - 100);
+  set.permute(order);
+  ASSERT_EQ(set.size(), n - 100);
+  const auto ids = set[set.id()];
+  const auto xs = set[set.position()];
+  const auto vs = set[velocity];
+  for (std::size_t k = 0; k < set.size(); ++k) {
+    const Index original = ids[k];
+    ASSERT_EQ(original, order[k]);
+    const Real s = static_cast<Real>(original);
+    EXPECT_EQ(xs[k], Vector<3>(s, 2 * s, 3 * s));
+    EXPECT_EQ(vs[k], Vector<3>(-s, -2 * s, -3 * s));
+    EXPECT_EQ(set[mass][k], s + Real(0.5));
+    EXPECT_EQ(set[phase][k], original % 7);
+  }
+}
+
+}  // namespace
+}  // namespace tide
