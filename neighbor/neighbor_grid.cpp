@@ -184,7 +184,7 @@ std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
   }
   build_cells(kept);
   build_lookup();
-  build_ranges();
+  own_neighbors_.build(*this, *this);
   return removed;
 }
 
@@ -252,24 +252,6 @@ void NeighborGrid<D>::build_lookup() {
 }
 
 template <int D>
-void NeighborGrid<D>::build_ranges() {
-  const std::size_t cells = cell_codes_.size();
-  range_offset_.resize(cells + 1);
-  range_offset_[0] = 0;
-  for_each_particle(cells, [&](std::size_t c) {
-    std::array<CellRange, stencil_size> stencil;
-    range_offset_[c + 1] = static_cast<std::uint32_t>(stencil_ranges(cell_coordinates(c), stencil));
-  });
-  for (std::size_t c = 0; c < cells; ++c) range_offset_[c + 1] += range_offset_[c];
-  ranges_.resize(range_offset_[cells]);
-  for_each_particle(cells, [&](std::size_t c) {
-    std::array<CellRange, stencil_size> stencil;
-    const int count = stencil_ranges(cell_coordinates(c), stencil);
-    std::copy(stencil.begin(), stencil.begin() + count, ranges_.begin() + range_offset_[c]);
-  });
-}
-
-template <int D>
 std::size_t NeighborGrid<D>::bytes_per_particle() const {
   const std::size_t n = std::max<std::size_t>(particle_count(), 1);
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
@@ -277,11 +259,39 @@ std::size_t NeighborGrid<D>::bytes_per_particle() const {
                             bytes(sort_workspace_.key_scratch) + bytes(sort_workspace_.order_scratch) +
                             bytes(sort_workspace_.histogram) + bytes(cell_codes_) + bytes(cell_start_) +
                             bytes(particle_cell_) + bytes(hash_codes_) + bytes(hash_slots_) +
-                            bytes(dense_slots_) + bytes(range_offset_) + bytes(ranges_);
+                            bytes(dense_slots_) + own_neighbors_.bytes();
   return total / n;
+}
+
+template <int D>
+void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid<D>& sources) {
+  for (int d = 0; d < D; ++d) {
+    if (queries.cell_counts_[d] != sources.cell_counts_[d] || queries.cell_size_[d] != sources.cell_size_[d] ||
+        queries.domain_.periodic[d] != sources.domain_.periodic[d])
+      throw std::invalid_argument("cross neighbours: both grids need the same domain and support radius");
+  }
+  shifts_ = sources.shifts_;
+  support_squared_ = sources.support_squared_;
+  const std::size_t cells = queries.cell_codes_.size();
+  range_offset_.resize(cells + 1);
+  range_offset_[0] = 0;
+  using Stencil = std::array<CellRange, NeighborGrid<D>::stencil_size>;
+  for_each_particle(cells, [&](std::size_t c) {
+    Stencil stencil;
+    range_offset_[c + 1] = static_cast<std::uint32_t>(sources.stencil_ranges(queries.cell_coordinates(c), stencil));
+  });
+  for (std::size_t c = 0; c < cells; ++c) range_offset_[c + 1] += range_offset_[c];
+  ranges_.resize(range_offset_[cells]);
+  for_each_particle(cells, [&](std::size_t c) {
+    Stencil stencil;
+    const int count = sources.stencil_ranges(queries.cell_coordinates(c), stencil);
+    std::copy(stencil.begin(), stencil.begin() + count, ranges_.begin() + range_offset_[c]);
+  });
 }
 
 template class NeighborGrid<2>;
 template class NeighborGrid<3>;
+template class CrossNeighbors<2>;
+template class CrossNeighbors<3>;
 
 }  // namespace tide

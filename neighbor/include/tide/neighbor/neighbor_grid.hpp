@@ -40,6 +40,46 @@ struct CellRange {
   std::uint32_t shift = 0;
 };
 
+template <int D>
+class NeighborGrid;
+
+/// For each occupied cell of a query grid, the merged ranges of source particles in its 3^D
+/// neighbouring cells of a source grid with the same domain and support. A grid keeps one such
+/// table over itself; a second table links two particle sets (e.g. fluid cells → wall particles),
+/// so passes walk contiguous ranges instead of looking cells up per particle. Rebuild it after
+/// either grid's `update`.
+template <int D>
+class CrossNeighbors {
+ public:
+  void build(const NeighborGrid<D>& queries, const NeighborGrid<D>& sources);
+
+  /// Calls f(j, x_ij, r2) for every source particle j with r2 = |x_ij|² < support², where
+  /// x_ij = x − x_j (minimum image) and x lies in query cell `cell`.
+  template <class F>
+  void for_each_in_cell(std::uint32_t cell, const Vector<D>& x, const ConstVectorView<D>& source_x, F&& f) const {
+    for (std::uint32_t r = range_offset_[cell]; r < range_offset_[cell + 1]; ++r) {
+      const CellRange range = ranges_[r];
+      const Vector<D> x_image = x - shifts_[range.shift];
+      for (Index j = range.begin; j < range.end; ++j) {
+        Vector<D> xij;
+        for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source_x.component[d][j];
+        const Real r2 = xij.squaredNorm();
+        if (r2 < support_squared_) f(j, xij, r2);
+      }
+    }
+  }
+
+  std::size_t bytes() const {
+    return range_offset_.capacity() * sizeof(std::uint32_t) + ranges_.capacity() * sizeof(CellRange);
+  }
+
+ private:
+  std::array<Vector<D>, D == 2 ? 9 : 27> shifts_{};
+  Real support_squared_ = 0;
+  std::vector<std::uint32_t> range_offset_;  // query cell c: ranges [offset[c], offset[c+1])
+  std::vector<CellRange> ranges_;
+};
+
 /// Uniform grid of cells at least one support radius wide, whose particles are kept sorted by
 /// the Morton code of their cell. After `update`, every cell is a contiguous index range and
 /// every occupied cell knows the (merged) ranges of its 3^D neighbouring cells.
@@ -64,7 +104,11 @@ class NeighborGrid {
   template <class F>
   void for_each_neighbor(std::size_t i, const ConstVectorView<D>& x, F&& f) const;
 
-  /// The same for an arbitrary point (e.g. a particle of another set, or a probe).
+  /// Occupied-cell slot of particle i of the set last passed to `update`.
+  std::uint32_t particle_cell(std::size_t i) const { return particle_cell_[i]; }
+
+  /// The same for an arbitrary point (e.g. a probe). Passes over a second particle set use a
+  /// CrossNeighbors table instead, which avoids the per-point cell look-ups.
   template <class F>
   void for_each_neighbor_of(const Vector<D>& point, const ConstVectorView<D>& x, F&& f) const;
 
@@ -82,6 +126,7 @@ class NeighborGrid {
   std::size_t bytes_per_particle() const;
 
  private:
+  friend class CrossNeighbors<D>;
   static constexpr std::uint32_t no_cell = std::numeric_limits<std::uint32_t>::max();
   static constexpr int stencil_size = D == 2 ? 9 : 27;
 
@@ -92,7 +137,6 @@ class NeighborGrid {
   int stencil_ranges(const std::array<std::int64_t, D>& cell, std::array<CellRange, stencil_size>& out) const;
   void build_cells(std::size_t n);
   void build_lookup();
-  void build_ranges();
 
   GridDomain<D> domain_;
   Real support_radius_;
@@ -114,25 +158,13 @@ class NeighborGrid {
   std::vector<std::uint64_t> hash_codes_;   // open addressing: code, or invalid_code_ if empty
   std::vector<std::uint32_t> hash_slots_;
   std::vector<std::uint32_t> dense_slots_;  // linear cell index -> slot, or no_cell
-  std::vector<std::uint32_t> range_offset_;  // cell c's neighbour ranges: [offset[c], offset[c+1])
-  std::vector<CellRange> ranges_;
+  CrossNeighbors<D> own_neighbors_;
 };
 
 template <int D>
 template <class F>
 void NeighborGrid<D>::for_each_neighbor(std::size_t i, const ConstVectorView<D>& x, F&& f) const {
-  const Vector<D> xi = x[i];
-  const std::uint32_t cell = particle_cell_[i];
-  for (std::uint32_t r = range_offset_[cell]; r < range_offset_[cell + 1]; ++r) {
-    const CellRange range = ranges_[r];
-    const Vector<D> xi_image = xi - shifts_[range.shift];
-    for (Index j = range.begin; j < range.end; ++j) {
-      Vector<D> xij;
-      for (int d = 0; d < D; ++d) xij[d] = xi_image[d] - x.component[d][j];
-      const Real r2 = xij.squaredNorm();
-      if (r2 < support_squared_) f(j, xij, r2);
-    }
-  }
+  own_neighbors_.for_each_in_cell(particle_cell_[i], x[i], x, f);
 }
 
 template <int D>
@@ -169,5 +201,7 @@ void NeighborGrid<D>::for_each_neighbor_of(const Vector<D>& point, const ConstVe
 
 extern template class NeighborGrid<2>;
 extern template class NeighborGrid<3>;
+extern template class CrossNeighbors<2>;
+extern template class CrossNeighbors<3>;
 
 }  // namespace tide

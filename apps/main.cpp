@@ -1,0 +1,83 @@
+// The `tide` command: run, check and describe TideSPH scenes.
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "run_command.hpp"
+#include "tide/core/config.hpp"
+#include "tide/core/parallel.hpp"
+
+namespace {
+
+// The shipped default scene: next to an installed binary (../share/tide/scenes), else in the
+// source tree the binary was built from.
+std::filesystem::path default_scene() {
+  std::error_code error;
+  const auto executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const auto installed = executable.parent_path().parent_path() / "share/tide/scenes/dam_break_2d.json";
+    if (std::filesystem::exists(installed)) return installed;
+  }
+  return std::filesystem::path(TIDE_SOURCE_SCENES_DIR) / "dam_break_2d.json";
+}
+
+int info() {
+  std::cout << "TideSPH " << TIDE_VERSION << '\n'
+            << "  precision   " << TIDE_REAL_NAME << '\n'
+            << "  threads     " << tide::thread_count() << " (oneTBB; --threads N caps it)\n"
+            << "  build type  " << TIDE_BUILD_TYPE << '\n'
+            << "  compiler    " << TIDE_CXX_COMPILER << '\n'
+            << "  flags       " << TIDE_CXX_FLAGS << '\n'
+            << "  scenes      " << default_scene().parent_path().string() << '\n';
+  return tide::app::exit_ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"TideSPH: smoothed-particle hydrodynamics. Runs scene files (docs/scenes.md)."};
+  app.require_subcommand(1);
+  int threads = 0;
+  app.add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
+
+  tide::app::RunOptions run_options;
+  std::string until;
+  CLI::App* run = app.add_subcommand("run", "run a scene (default: the shipped 2D dam break)");
+  run->add_option("scene", run_options.scene_file, "scene file (JSON)");
+  run->add_option("--out", run_options.output_directory, "output directory (default: runs/<scene name>)");
+  run->add_option("--until", run_options.until, "end time in s, overriding the scene's");
+  run->add_flag("--quiet", run_options.quiet, "no progress output");
+  run->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
+
+  std::filesystem::path check_file;
+  CLI::App* check = app.add_subcommand("check", "validate a scene file without running it");
+  check->add_option("scene", check_file, "scene file (JSON)")->required();
+
+  CLI::App* info_command = app.add_subcommand("info", "version, precision, threads and build flags");
+  info_command->add_option("--threads", threads, "number of worker threads")->check(CLI::PositiveNumber);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    const int code = app.exit(error);
+    return code == 0 ? tide::app::exit_ok : tide::app::exit_bad_input;
+  }
+
+  try {
+    std::optional<tide::ThreadLimit> limit;
+    if (threads > 0) limit.emplace(threads);
+    if (*run) {
+      if (run_options.scene_file.empty()) run_options.scene_file = default_scene();
+      return tide::app::run_scene(run_options);
+    }
+    if (*check) return tide::app::check_scene(check_file);
+    return info();
+  } catch (const std::exception& error) {
+    std::cerr << "tide: error: " << error.what() << '\n';
+    return tide::app::exit_failure;
+  }
+}

@@ -1,0 +1,157 @@
+#include "run_command.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "progress.hpp"
+#include "tide/io/frame_writer.hpp"
+#include "tide/io/scene_reader.hpp"
+#include "tide/solvers/instability.hpp"
+#include "tide/solvers/wcsph.hpp"
+
+namespace tide::app {
+namespace {
+
+std::string limit_counts(const TimeStepTally& tally) {
+  std::ostringstream text;
+  for (std::size_t k = 0; k < time_step_limit_count; ++k) {
+    text << (k > 0 ? ", " : "") << time_step_limit_name(static_cast<TimeStepLimit>(k)) << ' ' << tally.counts[k];
+  }
+  return text.str();
+}
+
+std::map<std::string, std::string> frame_attributes(const TimeStepTally& since_last_frame) {
+  std::map<std::string, std::string> attributes;
+  if (since_last_frame.total() == 0) return attributes;
+  attributes["time_step_limit"] = std::string(time_step_limit_name(since_last_frame.most_frequent()));
+  for (std::size_t k = 0; k < time_step_limit_count; ++k) {
+    attributes[std::string(time_step_limit_name(static_cast<TimeStepLimit>(k))) + "_limited_steps"] =
+        std::to_string(since_last_frame.counts[k]);
+  }
+  return attributes;
+}
+
+template <int D>
+int run(const scene::Scene& scene, const RunOptions& options, const std::filesystem::path& output_directory) {
+  std::optional<Wcsph<D>> simulation;
+  try {
+    simulation.emplace(scene);
+  } catch (const InstabilityError& error) {
+    std::cerr << "tide: " << scene.source << ": the initial state is already out of bounds: " << error.what() << '\n';
+    return exit_unstable;
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "tide: " << error.what() << '\n';
+    return exit_bad_input;
+  }
+  io::FrameWriter<D> writer(output_directory, scene.output.fields);
+  const double end_time = scene.time.end;
+  const double interval = scene.time.output_interval;
+  const std::size_t particles = simulation->fluid().size();
+  if (!options.quiet) {
+    std::cout << "tide: running " << scene.source << " (" << D << "D, " << particles << " fluid and "
+              << simulation->walls().size() << " wall particles) until t = " << end_time << " s; frames every "
+              << interval << " s into " << output_directory.string() << '\n';
+  }
+  const bool terminal = isatty(fileno(stdout)) != 0;
+  Progress progress(std::cout, terminal, options.quiet, scene.time.start, end_time, particles);
+
+  TimeStepTally run_tally, frame_tally;
+  writer.write(simulation->fluid(), static_cast<double>(simulation->time()), 0);
+  double next_output = scene.time.start + interval;
+  std::filesystem::path last_frame = output_directory;
+  try {
+    while (simulation->time() < end_time) {
+      const StepReport report = simulation->step();
+      run_tally.add(report.time_step.limit);
+      frame_tally.add(report.time_step.limit);
+      const double time = static_cast<double>(simulation->time());
+      // A frame is due once the time passes its output time (within round-off of the sum).
+      if (time >= next_output - 1e-9 * interval || time >= end_time) {
+        last_frame = writer.write(simulation->fluid(), time, simulation->step_count(), frame_attributes(frame_tally));
+        frame_tally = {};
+        while (next_output <= time + 1e-9 * interval) next_output += interval;
+      }
+      progress.update(time, simulation->step_count());
+    }
+  } catch (const InstabilityError& error) {
+    progress.finish(static_cast<double>(simulation->time()), simulation->step_count());
+    std::cerr << "tide: " << error.what() << "\ntide: the last good frame is " << last_frame.string() << '\n';
+    return exit_unstable;
+  }
+  progress.finish(static_cast<double>(simulation->time()), simulation->step_count());
+
+  const double wall = progress.wall_seconds();
+  const double rate = static_cast<double>(particles) * static_cast<double>(simulation->step_count()) / wall;
+  std::printf("run summary: %s\n", scene.source.c_str());
+  std::printf("  particles   %zu fluid, %zu wall, %zu removed (left the domain)\n", particles,
+              simulation->walls().size(), simulation->removed_total());
+  std::printf("  steps       %llu, simulated %.4g s\n", static_cast<unsigned long long>(simulation->step_count()),
+              static_cast<double>(simulation->time()) - scene.time.start);
+  std::printf("  wall time   %.2f s, %.3g M particle-steps/s (fluid particles x steps / wall time)\n", wall,
+              rate / 1e6);
+  std::printf("  time step   binding limit per step: %s\n", limit_counts(run_tally).c_str());
+  std::printf("  output      %zu frames, %s\n", writer.frames_written(), writer.xdmf_path().string().c_str());
+  return exit_ok;
+}
+
+std::optional<scene::Scene> load(const std::filesystem::path& file) {
+  try {
+    return io::read_scene_file(file);
+  } catch (const io::SceneError& error) {
+    std::cerr << "tide: " << error.what() << '\n';
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+int run_scene(const RunOptions& options) {
+  std::optional<scene::Scene> scene = load(options.scene_file);
+  if (!scene) return exit_bad_input;
+  if (options.until) {
+    if (!(*options.until > scene->time.start)) {
+      std::cerr << "tide: --until: expected a time after the scene's start time " << scene->time.start << " s, got "
+                << *options.until << '\n';
+      return exit_bad_input;
+    }
+    scene->time.end = *options.until;
+  }
+  const std::filesystem::path output_directory = options.output_directory.empty()
+                                                     ? std::filesystem::path("runs") / options.scene_file.stem()
+                                                     : options.output_directory;
+  return scene->dimension == 2 ? run<2>(*scene, options, output_directory)
+                               : run<3>(*scene, options, output_directory);
+}
+
+int check_scene(const std::filesystem::path& scene_file) {
+  const std::optional<scene::Scene> scene = load(scene_file);
+  if (!scene) return exit_bad_input;
+  try {
+    auto report = [&](const auto& simulation) {
+      std::cout << scene_file.string() << ": ok: " << scene->dimension << "D, " << simulation.fluid().size()
+                << " fluid and " << simulation.walls().size() << " wall particles, h = " << simulation.smoothing_length()
+                << " m, c0 = " << simulation.equation_of_state().sound_speed() << " m/s, t = " << scene->time.start
+                << " to " << scene->time.end << " s\n";
+    };
+    if (scene->dimension == 2) {
+      report(Wcsph<2>(*scene));
+    } else {
+      report(Wcsph<3>(*scene));
+    }
+  } catch (const InstabilityError& error) {
+    std::cerr << "tide: " << scene_file.string() << ": the initial state is out of bounds: " << error.what() << '\n';
+    return exit_bad_input;
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "tide: " << error.what() << '\n';
+    return exit_bad_input;
+  }
+  return exit_ok;
+}
+
+}  // namespace tide::app

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace tide::app {
+
+/// Exit codes of the `tide` command.
+enum ExitCode : int { exit_ok = 0, exit_failure = 1, exit_bad_input = 2, exit_unstable = 3 };
+
+struct RunOptions {
+  std::filesystem::path scene_file;
+  std::filesystem::path output_directory;  // empty: runs/<scene name>
+  std::optional<double> until;             // overrides the scene's end time
+  bool quiet = false;
+};
+
+/// `tide run`: reads the scene, runs it with progress, writes frames and prints a summary.
+int run_scene(const RunOptions& options);
+
+/// `tide check`: reads and validates the scene and builds its particles, without stepping.
+int check_scene(const std::filesystem::path& scene_file);
+
+}  // namespace tide::app

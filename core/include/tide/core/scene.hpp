@@ -1,0 +1,128 @@
+#pragma once
+
+// The scene model: plain data describing one simulation, independent of any file format.
+// io/ fills it from a JSON file (docs/scenes.md documents every key); solvers/ builds particle
+// sets and a pipeline from it. All quantities are SI. Vectors always hold three numbers; a 2D
+// scene uses the first two.
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "tide/core/kernels/kernel.hpp"
+
+namespace tide::scene {
+
+using Vec = std::array<double, 3>;
+
+struct Box {
+  Vec min{};
+  Vec max{};
+};
+
+struct Ball {
+  Vec centre{};
+  double radius = 0;
+};
+
+/// A half-space wall: the solid lies on the side opposite the normal.
+struct Plane {
+  Vec point{};
+  Vec normal{};
+};
+
+/// A fluid's material. The artificial speed of sound is either given (`sound_speed`) or set to
+/// 10 × `max_speed`, the largest speed the user expects (Mach 0.1, density variation ≈ 1%).
+struct Material {
+  std::string name;
+  double rest_density = 1000;          // kg/m³
+  double kinematic_viscosity = 0;      // m²/s, used by the laminar (Morris) viscosity
+  std::optional<double> sound_speed;   // m/s
+  std::optional<double> max_speed;     // m/s
+};
+
+/// A block of fluid particles filled on the lattice of the particle spacing.
+struct FluidBlock {
+  std::size_t material = 0;  // index into Scene::materials
+  std::variant<Box, Ball> shape;
+};
+
+enum class WallSlip { no_slip, free_slip };
+
+/// A closed box container whose inner faces are walls; `open_top` leaves out the face at the
+/// top of the last axis (y in 2D, z in 3D).
+struct Container {
+  Box inner;
+  bool open_top = true;
+};
+
+struct Walls {
+  int layers = 3;  // boundary particle layers; at least kernel support / spacing
+  WallSlip slip = WallSlip::no_slip;
+  std::optional<Container> container;
+  std::vector<std::variant<Box, Ball, Plane>> obstacles;
+};
+
+/// The region particles may occupy; a particle leaving it on a closed axis is removed.
+struct Domain {
+  Box box;
+  std::array<bool, 3> periodic{};
+};
+
+enum class Scheme { wcsph };
+enum class EquationOfState { tait, linear };
+enum class DensityMethod { summation, continuity };
+enum class ViscosityModel { artificial, laminar };
+
+struct Solver {
+  Scheme scheme = Scheme::wcsph;
+  EquationOfState equation_of_state = EquationOfState::tait;
+  double tait_exponent = 7;
+  DensityMethod density = DensityMethod::summation;
+  double delta_sph = 0.1;  // δ-SPH diffusion coefficient (continuity density only)
+  ViscosityModel viscosity = ViscosityModel::artificial;
+  double alpha = 0.02;     // Monaghan artificial viscosity, linear term
+  double beta = 0;         // Monaghan artificial viscosity, quadratic term
+  double cfl = 0.25;       // acoustic limit: dt ≤ cfl · h / (c0 + |v|max)
+  double viscous_number = 0.125;  // viscous limit: dt ≤ viscous_number · h² / ν
+  double force_number = 0.25;     // force limit: dt ≤ force_number · sqrt(h / |a|max)
+  double max_density_ratio = 1.5; // stability band: ρ/ρ0 must stay inside [1/ratio, ratio]
+  bool clamp_negative_pressure = true;  // p = max(p, 0): free-surface flows without tension
+};
+
+struct Time {
+  double start = 0;
+  double end = 1;
+  double output_interval = 0.01;
+};
+
+/// The per-particle fields a scene may ask the output to write: the one list the scene reader
+/// checks names against and docs/scenes.md documents.
+inline constexpr std::array<std::string_view, 7> output_field_names{"position",     "velocity", "density", "pressure",
+                                                                    "acceleration", "mass",     "id"};
+
+struct Output {
+  std::vector<std::string> fields{"position", "velocity", "density", "pressure"};
+};
+
+struct Scene {
+  std::string source;  // file the scene came from, for messages
+  int dimension = 2;
+  double particle_spacing = 0;
+  KernelType kernel = KernelType::wendland_c2;
+  double smoothing_ratio = 1.3;  // h / particle spacing
+  Domain domain;
+  std::vector<Material> materials;
+  std::vector<FluidBlock> fluid;
+  Walls walls;
+  Vec gravity{0, -9.81, 0};
+  Solver solver;
+  Time time;
+  Output output;
+};
+
+}  // namespace tide::scene

@@ -1,0 +1,544 @@
+#include "tide/io/frame_writer.hpp"
+
+#include <fcntl.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <numeric>
+#include <span>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+#include <type_traits>
+#include <utility>
+
+namespace tide::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------------
+// HDF5 plumbing: handles that close themselves, and every failure as one exception naming the file.
+
+/// While alive, HDF5 keeps its error stack to itself instead of printing it to stderr, so a failure
+/// reaches the caller as one std::runtime_error. The previous setting comes back afterwards: an
+/// embedding program that wants HDF5's printing keeps it for its own calls.
+class QuietHdf5Errors {
+ public:
+  QuietHdf5Errors() {
+    H5Eget_auto2(H5E_DEFAULT, &previous_function_, &previous_data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, previous_function_, previous_data_); }
+  QuietHdf5Errors(const QuietHdf5Errors&) = delete;
+  QuietHdf5Errors& operator=(const QuietHdf5Errors&) = delete;
+
+ private:
+  H5E_auto2_t previous_function_ = nullptr;
+  void* previous_data_ = nullptr;
+};
+
+/// The most specific message on HDF5's error stack, the one raised deepest in the library (e.g.
+/// "truncated file: eof = 512, ..."), which says more than the API call that failed; clears the stack.
+std::string take_hdf5_error_detail() {
+  std::string detail;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned position, const H5E_error2_t* error, void* out) -> herr_t {
+        if (position == 0 && error->desc != nullptr) *static_cast<std::string*>(out) = error->desc;
+        return 0;
+      },
+      &detail);
+  H5Eclear2(H5E_DEFAULT);
+  return detail;
+}
+
+[[noreturn]] void throw_hdf5_failure(const fs::path& file, std::string_view what) {
+  std::string message = file.string() + ": " + std::string(what);
+  if (const std::string detail = take_hdf5_error_detail(); !detail.empty()) message += " (HDF5: " + detail + ")";
+  throw std::runtime_error(message);
+}
+
+/// A file that HDF5 reads fine but that is not laid out as FrameWriter writes it.
+[[noreturn]] void throw_layout_error(const fs::path& file, std::string_view what) {
+  throw std::runtime_error(file.string() + ": not a TideSPH frame file: " + std::string(what));
+}
+
+/// An HDF5 identifier that closes itself.
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+
+  Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+  ~Handle() {
+    if (id_ >= 0) closer_(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+
+  hid_t get() const { return id_; }
+
+  /// Closes now and returns the status, for the close whose failure matters: H5Fclose flushes.
+  herr_t close() { return closer_(std::exchange(id_, H5I_INVALID_HID)); }
+
+ private:
+  hid_t id_;
+  Closer closer_;
+};
+
+/// HDF5 calls on one file, checked: a failure throws with the file's name and what was being done.
+struct CheckedCalls {
+  const fs::path& file;
+
+  Handle own(hid_t id, Handle::Closer closer, std::string_view what) const {
+    if (id < 0) throw_hdf5_failure(file, what);
+    return Handle(id, closer);
+  }
+  void check(herr_t status, std::string_view what) const {
+    if (status < 0) throw_hdf5_failure(file, what);
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Types on disk. Little-endian IEEE and fixed-width integers whatever the machine, so a frame
+// file reads the same everywhere; in memory the native types, HDF5 converts if they differ.
+
+static_assert(std::is_same_v<Index, std::uint32_t>, "index fields are written as 32-bit unsigned integers");
+constexpr bool real_is_double = std::is_same_v<Real, double>;
+
+hid_t real_memory_type() { return real_is_double ? H5T_NATIVE_DOUBLE : H5T_NATIVE_FLOAT; }
+hid_t real_file_type() { return real_is_double ? H5T_IEEE_F64LE : H5T_IEEE_F32LE; }
+
+// ---------------------------------------------------------------------------------------------
+// Writing one frame file.
+
+void write_attribute(const CheckedCalls& h5, hid_t group, const std::string& name, hid_t file_type, hid_t memory_type,
+                     const void* value) {
+  const Handle space = h5.own(H5Screate(H5S_SCALAR), H5Sclose, "cannot create a dataspace");
+  const Handle attribute = h5.own(H5Acreate2(group, name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                                  H5Aclose, "cannot create attribute '" + name + "'");
+  h5.check(H5Awrite(attribute.get(), memory_type, value), "cannot write attribute '" + name + "'");
+}
+
+/// A fixed-length UTF-8 string: h5dump prints it as text and every HDF5 binding reads it as a string.
+void write_string_attribute(const CheckedCalls& h5, hid_t group, const std::string& name, const std::string& value) {
+  const Handle type = h5.own(H5Tcopy(H5T_C_S1), H5Tclose, "cannot create a string type");
+  h5.check(H5Tset_size(type.get(), value.size() + 1), "cannot size the string type of attribute '" + name + "'");
+  h5.check(H5Tset_cset(type.get(), H5T_CSET_UTF8), "cannot set the character set of attribute '" + name + "'");
+  write_attribute(h5, group, name, type.get(), type.get(), value.c_str());
+}
+
+void write_dataset(const CheckedCalls& h5, hid_t group, const std::string& name, std::span<const hsize_t> shape,
+                   hid_t file_type, hid_t memory_type, const void* values, hid_t creation_properties = H5P_DEFAULT) {
+  const Handle space = h5.own(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose,
+                              "cannot create the dataspace of dataset '" + name + "'");
+  const Handle dataset =
+      h5.own(H5Dcreate2(group, name.c_str(), file_type, space.get(), H5P_DEFAULT, creation_properties, H5P_DEFAULT),
+             H5Dclose, "cannot create dataset '" + name + "'");
+  // The dataspace, not H5S_ALL, as selection: HDF5 then accepts a null buffer for zero particles.
+  h5.check(H5Dwrite(dataset.get(), memory_type, space.get(), space.get(), H5P_DEFAULT, values),
+           "cannot write dataset '" + name + "'");
+}
+
+/// Scalar and index fields are stored as they are, (N); a vector field's D component arrays are
+/// interleaved into one (N, D) dataset, the layout ParaView and numpy expect of a vector.
+template <int D>
+void write_field(const CheckedCalls& h5, hid_t group, const ParticleSet<D>& set, const FieldInfo& field,
+                 std::vector<Real>& interleaved) {
+  const std::size_t count = set.size();
+  switch (field.kind) {
+    case FieldKind::scalar: {
+      const hsize_t shape[] = {count};
+      write_dataset(h5, group, field.name, shape, real_file_type(), real_memory_type(),
+                    set[set.scalar(field.name)].data());
+      return;
+    }
+    case FieldKind::index: {
+      const hsize_t shape[] = {count};
+      write_dataset(h5, group, field.name, shape, H5T_STD_U32LE, H5T_NATIVE_UINT32, set[set.index(field.name)].data());
+      return;
+    }
+    case FieldKind::vector: {
+      const ConstVectorView<D> vectors = set[set.vector(field.name)];
+      interleaved.resize(count * D);
+      for (std::size_t i = 0; i < count; ++i)
+        for (int d = 0; d < D; ++d) interleaved[i * D + d] = vectors.component[d][i];
+      const hsize_t shape[] = {count, D};
+      write_dataset(h5, group, field.name, shape, real_file_type(), real_memory_type(), interleaved.data());
+      return;
+    }
+  }
+}
+
+/// Name of the dataset, beside the frame's group, that holds the particles' vertex cells.
+constexpr const char* connectivity_dataset = "xdmf_connectivity";
+
+/// 0, 1, ..., N-1: each particle its own vertex cell. ParaView's Xdmf3 reader builds cells only from
+/// explicit connectivity and draws nothing of a grid without cells (the older XDMF 2 reader would
+/// generate them). Shuffle + deflate shrink this counting sequence to almost nothing on disk.
+void write_connectivity(const CheckedCalls& h5, hid_t file, std::size_t count) {
+  std::vector<Index> vertices(count);
+  std::iota(vertices.begin(), vertices.end(), Index(0));
+  const hsize_t shape[] = {count};
+  const Handle properties = h5.own(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "cannot create dataset properties");
+  if (count > 0) {  // a chunk may not exceed the extent, so an empty frame stays uncompressed
+    const hsize_t chunk[] = {std::min<hsize_t>(count, hsize_t(1) << 16)};
+    h5.check(H5Pset_chunk(properties.get(), 1, chunk), "cannot chunk the connectivity");
+    h5.check(H5Pset_shuffle(properties.get()), "cannot shuffle the connectivity");
+    h5.check(H5Pset_deflate(properties.get(), 1), "cannot compress the connectivity");
+  }
+  write_dataset(h5, file, connectivity_dataset, shape, H5T_STD_U32LE, H5T_NATIVE_UINT32, vertices.data(),
+                properties.get());
+}
+
+/// What one frame file holds.
+template <int D>
+struct FrameContent {
+  std::string group_name;
+  const ParticleSet<D>& set;
+  const std::vector<FieldInfo>& fields;
+  double time;
+  std::uint64_t step;
+  const std::map<std::string, std::string>& attributes;
+};
+
+template <int D>
+void write_frame_file(const fs::path& path, const FrameContent<D>& frame, std::vector<Real>& interleaved) {
+  const QuietHdf5Errors quiet;
+  const CheckedCalls h5{path};
+  Handle file =
+      h5.own(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, "cannot create the HDF5 file");
+  {
+    const Handle group = h5.own(H5Gcreate2(file.get(), frame.group_name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                                H5Gclose, "cannot create group '" + frame.group_name + "'");
+    write_attribute(h5, group.get(), "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &frame.time);
+    write_attribute(h5, group.get(), "step", H5T_STD_U64LE, H5T_NATIVE_UINT64, &frame.step);
+    for (const auto& [name, value] : frame.attributes) write_string_attribute(h5, group.get(), name, value);
+    for (const FieldInfo& field : frame.fields) write_field(h5, group.get(), frame.set, field, interleaved);
+  }
+  write_connectivity(h5, file.get(), frame.set.size());
+  h5.check(file.close(), "cannot close the HDF5 file (flushing it failed)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Files that appear complete or not at all.
+
+/// fsync: without it, a power cut soon after the rename could leave the final name pointing at
+/// blocks that were never written, the very truncated file the rename is there to prevent.
+void flush_to_disk(const fs::path& path) {
+  const int descriptor = ::open(path.c_str(), O_RDONLY);
+  if (descriptor < 0) throw std::system_error(errno, std::generic_category(), path.string() + ": cannot open to flush");
+  const int status = ::fsync(descriptor);
+  const int fsync_errno = errno;
+  ::close(descriptor);
+  if (status != 0) throw std::system_error(fsync_errno, std::generic_category(), path.string() + ": cannot flush");
+}
+
+/// Writes `destination` through `write_to`, which fills a hidden temporary file beside it; the
+/// temporary is flushed and renamed over `destination` (atomic on POSIX), or removed on failure.
+void replace_atomically(const fs::path& destination, const std::function<void(const fs::path&)>& write_to) {
+  const fs::path temporary = destination.parent_path() / ("." + destination.filename().string() + ".tmp");
+  try {
+    write_to(temporary);
+    flush_to_disk(temporary);
+    std::error_code error;
+    fs::rename(temporary, destination, error);
+    if (error)
+      throw std::runtime_error(destination.string() + ": cannot move " + temporary.filename().string() +
+                               " into place: " + error.message());
+  } catch (...) {
+    std::error_code ignored;  // the original failure is the one to report
+    fs::remove(temporary, ignored);
+    throw;
+  }
+}
+
+void write_text_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error(path.string() + ": cannot write the file");
+}
+
+// ---------------------------------------------------------------------------------------------
+// XDMF 3: one Uniform grid per frame in a Temporal collection, pointing into the frame files.
+
+/// "frames_000012": six digits keep file listings in frame order up to a million frames.
+std::string numbered(std::string_view stem, std::size_t index) {
+  char digits[24];
+  std::snprintf(digits, sizeof digits, "%06zu", index);
+  return std::string(stem) + "_" + digits;
+}
+
+/// Text for an XML attribute value or element content; the XDMF is written with double quotes.
+std::string xml_escaped(std::string_view text) {
+  static const std::map<char, std::string_view> entities = {
+      {'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}};
+  std::string escaped;
+  for (const char c : text) {
+    const auto entity = entities.find(c);
+    if (entity == entities.end())
+      escaped += c;
+    else
+      escaped += entity->second;
+  }
+  return escaped;
+}
+
+/// The shortest text that reads back as the same double, so XDMF times equal the HDF5 attribute.
+std::string exact_text(double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+/// <DataItem> for one dataset of a frame: its shape and the XDMF name of its stored type.
+std::string xdmf_data_item(const std::string& file_name, const std::string& group_name, const FieldInfo& field,
+                           std::size_t count) {
+  std::string dimensions = std::to_string(count);
+  if (field.kind == FieldKind::vector) dimensions += " " + std::to_string(field.components);
+  const bool is_index = field.kind == FieldKind::index;
+  const char* number_type = is_index ? "UInt" : "Float";
+  const std::size_t precision = is_index ? sizeof(Index) : sizeof(Real);
+  return "<DataItem Dimensions=\"" + dimensions + "\" NumberType=\"" + number_type + "\" Precision=\"" +
+         std::to_string(precision) + "\" Format=\"HDF\">" + xml_escaped(file_name) + ":/" + group_name + "/" +
+         xml_escaped(field.name) + "</DataItem>";
+}
+
+/// XDMF defines "Vector" as three components; "Matrix" is any number of columns. A 2D vector field
+/// is therefore a "Matrix" of N rows and 2 columns: ParaView's Xdmf3 and XDMF readers both load it
+/// as a 2-component point array (checked with ParaView 5.11), while a 2-column "Vector" breaks the
+/// standard (the XDMF 2 reader pads it, other tools may misread it) and a true 3-vector would cost a
+/// zero column on disk or a JOIN of hyperslabs in every grid.
+const char* xdmf_attribute_type(const FieldInfo& field) {
+  if (field.kind != FieldKind::vector) return "Scalar";
+  return field.components == 3 ? "Vector" : "Matrix";
+}
+
+/// The <Grid> of one frame: every particle a Polyvertex cell of one node, at `position`, carrying
+/// the other fields as node attributes.
+template <int D>
+std::string xdmf_grid(const std::string& file_name, const FrameContent<D>& frame) {
+  const std::string count = std::to_string(frame.set.size());
+  std::string grid = "      <Grid Name=\"" + frame.group_name + "\" GridType=\"Uniform\">\n";
+  grid += "        <Time Value=\"" + exact_text(frame.time) + "\"/>\n";
+  grid += "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + count + "\" NodesPerElement=\"1\">\n";
+  grid += "          <DataItem Dimensions=\"" + count + "\" NumberType=\"UInt\" Precision=\"4\" Format=\"HDF\">" +
+          xml_escaped(file_name) + ":/" + connectivity_dataset + "</DataItem>\n        </Topology>\n";
+  for (const FieldInfo& field : frame.fields) {
+    const std::string data_item = xdmf_data_item(file_name, frame.group_name, field, frame.set.size());
+    if (field.name == "position") {
+      grid += std::string("        <Geometry GeometryType=\"") + (D == 2 ? "XY" : "XYZ") + "\">\n          " +
+              data_item + "\n        </Geometry>\n";
+    } else {
+      grid += "        <Attribute Name=\"" + xml_escaped(field.name) + "\" AttributeType=\"" +
+              xdmf_attribute_type(field) + "\" Center=\"Node\">\n          " + data_item + "\n        </Attribute>\n";
+    }
+  }
+  return grid + "      </Grid>\n";
+}
+
+std::string xdmf_document(const std::string& run_name, const std::vector<std::string>& grids) {
+  std::string document = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n";
+  document += "    <Grid Name=\"" + xml_escaped(run_name) + "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const std::string& grid : grids) document += grid;
+  return document + "    </Grid>\n  </Domain>\n</Xdmf>\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checking what the caller asks for.
+
+/// The field list with "position" in it (ParaView needs the geometry) and each name once.
+std::vector<std::string> fields_to_write(std::vector<std::string> fields) {
+  if (std::find(fields.begin(), fields.end(), "position") == fields.end()) fields.insert(fields.begin(), "position");
+  for (auto it = fields.begin(); it != fields.end(); ++it) {
+    if (it->empty() || it->find('/') != std::string::npos)
+      throw std::invalid_argument("cannot write field '" + *it + "': a field name is not empty and has no '/'");
+    if (std::find(std::next(it), fields.end(), *it) != fields.end())
+      throw std::invalid_argument("field '" + *it + "' is listed twice for output");
+  }
+  return fields;
+}
+
+/// The run name becomes a file name and the file part of XDMF's "file:/dataset" references.
+void check_run_name(const std::string& run_name) {
+  if (run_name.empty() || run_name.find_first_of("/:") != std::string::npos)
+    throw std::invalid_argument("run name '" + run_name + "' must be a non-empty file name without '/' or ':'");
+}
+
+template <int D>
+std::vector<FieldInfo> resolve_fields(const ParticleSet<D>& set, const std::vector<std::string>& names) {
+  std::vector<FieldInfo> resolved;
+  for (const std::string& name : names) {
+    const auto& available = set.fields();
+    const auto it =
+        std::find_if(available.begin(), available.end(), [&](const FieldInfo& f) { return f.name == name; });
+    if (it == available.end()) {
+      std::string message = "cannot write field '" + name + "': the particle set has no such field (it has";
+      for (const FieldInfo& field : available) message += " " + field.name;
+      throw std::invalid_argument(message + ")");
+    }
+    resolved.push_back(*it);
+  }
+  return resolved;
+}
+
+void check_attribute_names(const std::map<std::string, std::string>& attributes) {
+  for (const auto& [name, value] : attributes)
+    if (name.empty() || name == "time" || name == "step")
+      throw std::invalid_argument("frame attribute name '" + name + "' is empty or taken (time and step are written)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading a frame file back.
+
+herr_t collect_link_name(hid_t, const char* name, const H5L_info_t*, void* names) {
+  static_cast<std::vector<std::string>*>(names)->emplace_back(name);
+  return 0;
+}
+
+herr_t collect_attribute_name(hid_t, const char* name, const H5A_info_t*, void* names) {
+  static_cast<std::vector<std::string>*>(names)->emplace_back(name);
+  return 0;
+}
+
+std::vector<std::string> link_names(const CheckedCalls& h5, hid_t group, std::string_view group_name) {
+  std::vector<std::string> names;
+  h5.check(H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_link_name, &names),
+           "cannot list the contents of " + std::string(group_name));
+  return names;
+}
+
+std::vector<std::string> attribute_names(const CheckedCalls& h5, hid_t object, std::string_view object_name) {
+  std::vector<std::string> names;
+  h5.check(H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect_attribute_name, &names),
+           "cannot list the attributes of " + std::string(object_name));
+  return names;
+}
+
+template <class T>
+T read_number_attribute(const CheckedCalls& h5, hid_t group, const std::string& group_name, const char* name,
+                        hid_t memory_type) {
+  if (H5Aexists(group, name) <= 0)
+    throw_layout_error(h5.file, "group " + group_name + " has no '" + name + "' attribute");
+  const Handle attribute =
+      h5.own(H5Aopen(group, name, H5P_DEFAULT), H5Aclose, std::string("cannot open attribute ") + name);
+  T value{};
+  h5.check(H5Aread(attribute.get(), memory_type, &value), std::string("cannot read attribute ") + name);
+  return value;
+}
+
+std::string read_string_attribute(const CheckedCalls& h5, hid_t group, const std::string& name) {
+  const Handle attribute = h5.own(H5Aopen(group, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open attribute " + name);
+  const Handle type = h5.own(H5Aget_type(attribute.get()), H5Tclose, "cannot read the type of attribute " + name);
+  if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) != 0)
+    throw_layout_error(h5.file, "attribute '" + name + "' is not a fixed-length string");
+  std::string value(H5Tget_size(type.get()), '\0');
+  h5.check(H5Aread(attribute.get(), type.get(), value.data()), "cannot read attribute " + name);
+  value.erase(std::find(value.begin(), value.end(), '\0'), value.end());
+  return value;
+}
+
+FrameDataset read_dataset(const CheckedCalls& h5, hid_t group, const std::string& name) {
+  const Handle dataset = h5.own(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "cannot open dataset " + name);
+  const Handle space = h5.own(H5Dget_space(dataset.get()), H5Sclose, "cannot read the shape of dataset " + name);
+  const Handle type = h5.own(H5Dget_type(dataset.get()), H5Tclose, "cannot read the type of dataset " + name);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank != 1 && rank != 2) throw_layout_error(h5.file, "dataset '" + name + "' is not one- or two-dimensional");
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  if (type_class != H5T_FLOAT && type_class != H5T_INTEGER)
+    throw_layout_error(h5.file, "dataset '" + name + "' does not hold numbers");
+
+  hsize_t dims[2] = {0, 0};
+  h5.check(H5Sget_simple_extent_dims(space.get(), dims, nullptr), "cannot read the shape of dataset " + name);
+  FrameDataset result;
+  result.shape.assign(dims, dims + rank);
+  // A damaged header can claim any shape: refuse one that the stored bytes cannot hold before
+  // allocating for it (fields are stored contiguous and uncompressed, so the bytes bound the
+  // shape; divisions, so that a huge claimed extent cannot overflow the check).
+  const hsize_t value_size = H5Tget_size(type.get());
+  const hsize_t stored_values = value_size == 0 ? 0 : H5Dget_storage_size(dataset.get()) / value_size;
+  std::size_t value_count = 1;
+  for (const std::size_t extent : result.shape) {
+    if (extent != 0 && value_count > stored_values / extent)
+      throw_layout_error(h5.file, "dataset '" + name + "' claims more values than it stores");
+    value_count *= extent;
+  }
+  result.values.resize(value_count);
+  h5.check(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, space.get(), space.get(), H5P_DEFAULT, result.values.data()),
+           "cannot read dataset " + name);
+  return result;
+}
+
+}  // namespace
+
+Frame read_frame(const fs::path& path) {
+  const QuietHdf5Errors quiet;
+  const CheckedCalls h5{path};
+  const Handle file =
+      h5.own(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open as an HDF5 file");
+  std::vector<std::string> groups = link_names(h5, file.get(), "the file");
+  std::erase(groups, connectivity_dataset);
+  if (groups.size() != 1)
+    throw_layout_error(path, "expected one frame group at the root, found " + std::to_string(groups.size()));
+
+  Frame frame;
+  frame.group = groups.front();
+  const std::string group_path = "/" + frame.group;
+  const Handle group =
+      h5.own(H5Gopen2(file.get(), frame.group.c_str(), H5P_DEFAULT), H5Gclose, "cannot open group " + group_path);
+  frame.time = read_number_attribute<double>(h5, group.get(), group_path, "time", H5T_NATIVE_DOUBLE);
+  frame.step = read_number_attribute<std::uint64_t>(h5, group.get(), group_path, "step", H5T_NATIVE_UINT64);
+  for (const std::string& name : attribute_names(h5, group.get(), group_path))
+    if (name != "time" && name != "step") frame.attributes[name] = read_string_attribute(h5, group.get(), name);
+  for (const std::string& name : link_names(h5, group.get(), group_path))
+    frame.datasets[name] = read_dataset(h5, group.get(), name);
+  return frame;
+}
+
+template <int D>
+FrameWriter<D>::FrameWriter(fs::path directory, std::vector<std::string> fields, std::string run_name)
+    : directory_(std::move(directory)), fields_(fields_to_write(std::move(fields))), run_name_(std::move(run_name)) {
+  check_run_name(run_name_);
+  std::error_code error;
+  fs::create_directories(directory_, error);
+  if (error) throw std::runtime_error(directory_.string() + ": cannot create the output directory: " + error.message());
+}
+
+template <int D>
+fs::path FrameWriter<D>::xdmf_path() const {
+  return directory_ / (run_name_ + ".xdmf");
+}
+
+template <int D>
+fs::path FrameWriter<D>::write(const ParticleSet<D>& set, double time, std::uint64_t step,
+                               const std::map<std::string, std::string>& attributes) {
+  const std::vector<FieldInfo> fields = resolve_fields(set, fields_);
+  check_attribute_names(attributes);
+  const FrameContent<D> frame{numbered("frame", frames_written()), set, fields, time, step, attributes};
+  const std::string file_name = numbered(run_name_, frames_written()) + ".h5";
+  const fs::path frame_path = directory_ / file_name;
+
+  replace_atomically(frame_path, [&](const fs::path& temporary) { write_frame_file(temporary, frame, interleaved_); });
+  // The XDMF file names the new frame only once the frame file is complete and in place.
+  grids_.push_back(xdmf_grid(file_name, frame));
+  try {
+    const std::string document = xdmf_document(run_name_, grids_);
+    replace_atomically(xdmf_path(), [&](const fs::path& temporary) { write_text_file(temporary, document); });
+  } catch (...) {
+    grids_.pop_back();
+    throw;
+  }
+  return frame_path;
+}
+
+template class FrameWriter<2>;
+template class FrameWriter<3>;
+
+}  // namespace tide::io

@@ -1,0 +1,81 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "tide/core/particle_set.hpp"
+
+namespace tide::io {
+
+/// One dataset of a frame file, converted to double.
+struct FrameDataset {
+  /// (N) for scalar and index fields, (N, D) for vector fields.
+  std::vector<std::size_t> shape;
+  /// Row-major: component d of particle i of a vector field is values[i * D + d].
+  std::vector<double> values;
+};
+
+/// A frame file read back: the attributes of its group and every dataset in it.
+struct Frame {
+  std::string group;  ///< e.g. "frame_000012"
+  double time = 0;
+  std::uint64_t step = 0;
+  std::map<std::string, std::string> attributes;  ///< the extra string attributes
+  std::map<std::string, FrameDataset> datasets;   ///< by field name
+};
+
+/// Reads one frame file as FrameWriter writes it (for tests and tools). A missing, truncated or
+/// foreign file gives a std::runtime_error that names the file and what failed.
+Frame read_frame(const std::filesystem::path& path);
+
+/// Writes a run's output for ParaView: one HDF5 file per frame and an XDMF file that names them.
+///
+/// Layout of `directory` after frames 0..k (see docs/output.md):
+///   <run>_000000.h5 ... <run>_00000k.h5   one group /frame_00000i per file, one dataset per field,
+///                                          and /xdmf_connectivity, the vertex cells ParaView draws
+///   <run>.xdmf                             XDMF 3 temporal collection of those frames
+///
+/// Crash safety: every file is written under a hidden temporary name and renamed into place only
+/// once it is complete and on disk, and the XDMF file is rewritten the same way after each frame.
+/// A run killed at any moment therefore leaves an XDMF file that names only complete frames.
+///
+/// Frames are numbered 0, 1, 2, ... in the order they are written (the solver step is an
+/// attribute). A writer opened on a directory that already holds a run replaces its files one by
+/// one as it goes.
+template <int D>
+class FrameWriter {
+ public:
+  /// `fields`: the names of the fields to write; "position" is always written, listed or not.
+  /// Names are checked against the particle set at each write (std::invalid_argument names an
+  /// unknown field). `run_name` is the stem of the file names. Creates `directory` if absent.
+  FrameWriter(std::filesystem::path directory, std::vector<std::string> fields, std::string run_name = "frames");
+
+  /// Writes the next frame and rewrites the XDMF file; returns the path of the frame file.
+  /// `attributes` become extra string attributes of the frame's group ("time" and "step" are
+  /// taken). HDF5 and file-system failures give std::runtime_error naming the file; the frames
+  /// already written and the XDMF file naming them stay valid.
+  std::filesystem::path write(const ParticleSet<D>& set, double time, std::uint64_t step,
+                              const std::map<std::string, std::string>& attributes = {});
+
+  const std::filesystem::path& directory() const { return directory_; }
+  std::filesystem::path xdmf_path() const;
+  std::size_t frames_written() const { return grids_.size(); }
+
+ private:
+  std::filesystem::path directory_;
+  std::vector<std::string> fields_;
+  std::string run_name_;
+  /// The XDMF <Grid> element of each frame written, in order.
+  std::vector<std::string> grids_;
+  /// Interleaving buffer for vector fields, kept to avoid one allocation per field and frame.
+  std::vector<Real> interleaved_;
+};
+
+extern template class FrameWriter<2>;
+extern template class FrameWriter<3>;
+
+}  // namespace tide::io

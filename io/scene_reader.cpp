@@ -1,0 +1,810 @@
+#include "tide/io/scene_reader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <initializer_list>
+#include <iterator>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <system_error>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace tide::io {
+
+SceneError::SceneError(std::string file, std::string key_path, std::string expected, std::string found)
+    : SceneError(file + (key_path.empty() ? "" : ": " + key_path) + ": expected " + expected + ", got " + found, file,
+                 key_path, expected, found, 0, 0) {}
+
+SceneError SceneError::syntax(std::string file, std::size_t line, std::size_t column, std::string found) {
+  std::string message = file + ": line " + std::to_string(line) + ", column " + std::to_string(column) +
+                        ": expected valid JSON, got " + found;
+  return SceneError(std::move(message), std::move(file), "", "valid JSON", std::move(found), line, column);
+}
+
+SceneError::SceneError(std::string message, std::string file, std::string key_path, std::string expected,
+                       std::string found, std::size_t line, std::size_t column)
+    : std::runtime_error(message),
+      file_(std::move(file)),
+      key_path_(std::move(key_path)),
+      expected_(std::move(expected)),
+      found_(std::move(found)),
+      line_(line),
+      column_(column) {}
+
+namespace {
+
+using nlohmann::json;
+using scene::Vec;
+
+constexpr std::string_view missing_key = "nothing (the key is missing)";
+constexpr double standard_gravity = 9.81;  // m/s²
+
+// ---------------------------------------------------------------------------------------------
+// Text for messages
+
+/// A value as the user wrote it (compact JSON), cut short so that a message stays one line.
+std::string describe(const json& value) {
+  constexpr std::size_t longest = 60;
+  std::string text = value.dump();
+  if (text.size() > longest) text = text.substr(0, longest) + "...";
+  return text;
+}
+
+/// A number the reader computed (a bound, a derived size): six significant digits are plenty.
+std::string format_number(double value) {
+  std::array<char, 32> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%g", value);
+  return buffer.data();
+}
+
+std::string format_vector(const Vec& v, int dimension) {
+  std::string text = "[";
+  for (int d = 0; d < dimension; ++d) text += (d > 0 ? ", " : "") + format_number(v[d]);
+  return text + "]";
+}
+
+std::string format_box(const scene::Box& box, int dimension) {
+  std::string text;
+  for (int d = 0; d < dimension; ++d) {
+    text += (d > 0 ? " x [" : "[") + format_number(box.min[d]) + ", " + format_number(box.max[d]) + "]";
+  }
+  return text;
+}
+
+std::string format_shape(const std::variant<scene::Box, scene::Ball>& shape, int dimension) {
+  if (const auto* box = std::get_if<scene::Box>(&shape)) return "the box " + format_box(*box, dimension);
+  const auto& ball = std::get<scene::Ball>(shape);
+  return "the ball of centre " + format_vector(ball.centre, dimension) + " and radius " + format_number(ball.radius);
+}
+
+/// "[d]", built by appending: GCC 12 warns falsely (-Wrestrict) on "[" + std::to_string(d).
+std::string axis_index(int d) {
+  std::string text = "[";
+  text += std::to_string(d);
+  text += ']';
+  return text;
+}
+
+template <class Names>
+std::string quoted_list(const Names& names) {
+  std::string text;
+  for (const std::string_view name : names) text += (text.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+  return text;
+}
+
+/// A key as one JSON pointer token (RFC 6901): '~' and '/' are escaped.
+std::string pointer_token(std::string_view key) {
+  std::string token;
+  for (const char c : key) {
+    if (c == '~') {
+      token += "~0";
+    } else if (c == '/') {
+      token += "~1";
+    } else {
+      token += c;
+    }
+  }
+  return token;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Parsing the text
+
+/// nlohmann::json keeps only the last of two equal keys in an object, without a word. In a scene
+/// that is an editing mistake (two "solver" blocks, one of them ignored), so the parser's
+/// callback refuses it. It follows the path of the value being read, for the message.
+class DuplicateKeyGuard {
+ public:
+  explicit DuplicateKeyGuard(const std::string& file) : file_(file) {}
+
+  void on_event(json::parse_event_t event, const json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        open_.emplace_back();
+        open_.back().is_array = event == json::parse_event_t::array_start;
+        break;
+      case json::parse_event_t::key:
+        on_key(parsed.get<std::string>());
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        open_.pop_back();
+        finish_value();
+        break;
+      case json::parse_event_t::value:
+        finish_value();
+        break;
+    }
+  }
+
+ private:
+  /// An object or array whose end the parser has not reached yet.
+  struct OpenContainer {
+    bool is_array = false;
+    std::size_t index = 0;  // of the element being read, in an array
+    std::string key;        // of the member being read, in an object
+    std::set<std::string> keys;
+  };
+
+  void on_key(std::string key) {
+    OpenContainer& object = open_.back();
+    object.key = std::move(key);
+    if (!object.keys.insert(object.key).second) {
+      throw SceneError(file_, current_path(), "each key at most once in an object",
+                       "\"" + object.key + "\" a second time");
+    }
+  }
+
+  void finish_value() {
+    if (!open_.empty() && open_.back().is_array) ++open_.back().index;
+  }
+
+  std::string current_path() const {
+    std::string path;
+    for (const OpenContainer& container : open_) {
+      path += "/" + (container.is_array ? std::to_string(container.index) : pointer_token(container.key));
+    }
+    return path;
+  }
+
+  const std::string& file_;
+  std::vector<OpenContainer> open_;
+};
+
+/// nlohmann's message without its "[json.exception.parse_error.101] parse error at line L,
+/// column C: " prefix, which the SceneError's own location replaces.
+std::string error_detail(const json::exception& error) {
+  const std::string message = error.what();
+  const std::size_t id_end = message.find("] ");
+  const std::size_t start = id_end == std::string::npos ? 0 : id_end + 2;
+  const std::size_t column = message.find("column ", start);
+  const std::size_t detail = column == std::string::npos ? column : message.find(": ", column);
+  return detail == std::string::npos ? message.substr(start) : message.substr(detail + 2);
+}
+
+json parse_json(std::string_view text, const std::string& file) {
+  DuplicateKeyGuard guard(file);
+  const json::parser_callback_t callback = [&guard](int, json::parse_event_t event, json& parsed) {
+    guard.on_event(event, parsed);
+    return true;
+  };
+  try {
+    return json::parse(text.begin(), text.end(), callback, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& error) {
+    // error.byte counts the characters read, the offending one included.
+    const std::string_view before = text.substr(0, error.byte > 0 ? std::min(error.byte - 1, text.size()) : 0);
+    const std::size_t line = 1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
+    const std::size_t line_start = before.rfind('\n') == std::string_view::npos ? 0 : before.rfind('\n') + 1;
+    throw SceneError::syntax(file, line, before.size() - line_start + 1, error_detail(error));
+  } catch (const json::out_of_range& error) {
+    // A number too large for a double is refused by the parser with no position.
+    throw SceneError(file, "", "valid JSON", error_detail(error));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checking the document
+
+/// A JSON value with its JSON pointer from the document root.
+struct Node {
+  const json* value = nullptr;  // null where the key is absent
+  std::string path;
+
+  bool present() const { return value != nullptr; }
+};
+
+/// `object` must be a checked object.
+Node child(const Node& object, std::string_view key) {
+  const auto member = object.value->find(std::string(key));
+  return {member == object.value->end() ? nullptr : &*member, object.path + "/" + pointer_token(key)};
+}
+
+/// `array` must be a checked array.
+Node element(const Node& array, std::size_t index) {
+  return {&(*array.value)[index], array.path + "/" + std::to_string(index)};
+}
+
+struct NumberRule {
+  std::string_view expected;
+  bool (*accepts)(double);
+};
+
+constexpr NumberRule any_number{"a number", [](double) { return true; }};
+constexpr NumberRule positive{"a number > 0", [](double x) { return x > 0; }};
+constexpr NumberRule non_negative{"a number >= 0", [](double x) { return x >= 0; }};
+constexpr NumberRule in_unit_interval{"a number in (0, 1]", [](double x) { return x > 0 && x <= 1; }};
+constexpr NumberRule above_one{"a number > 1", [](double x) { return x > 1; }};
+
+/// An enumerator with its spelling in scene files.
+template <class E>
+struct Named {
+  std::string_view name;
+  E value;
+};
+
+constexpr std::array<Named<scene::Scheme>, 1> scheme_names{{{"wcsph", scene::Scheme::wcsph}}};
+constexpr std::array<Named<scene::EquationOfState>, 2> equation_of_state_names{
+    {{"tait", scene::EquationOfState::tait}, {"linear", scene::EquationOfState::linear}}};
+constexpr std::array<Named<scene::DensityMethod>, 2> density_method_names{
+    {{"summation", scene::DensityMethod::summation}, {"continuity", scene::DensityMethod::continuity}}};
+constexpr std::array<Named<scene::ViscosityModel>, 2> viscosity_model_names{
+    {{"artificial", scene::ViscosityModel::artificial}, {"laminar", scene::ViscosityModel::laminar}}};
+constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
+    {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
+
+/// Wall layers a kernel needs so that a fluid particle touching a wall has wall particles across
+/// its whole support: ceil(support radius / spacing).
+int required_wall_layers(KernelType kernel, double smoothing_ratio) {
+  const double support_in_spacings = static_cast<double>(kernel_support_factor(kernel)) * smoothing_ratio;
+  return static_cast<int>(std::ceil(support_in_spacings - 1e-9));  // 2 × 1.5 is 3 layers, not 4
+}
+
+/// Without a "domain" key: the container's inner box with room for its wall layers on every
+/// side, and above an open top as much room again as the container is high, so that a splash
+/// stays inside the domain.
+scene::Domain derived_domain(const scene::Container& container, double wall_thickness, int dimension) {
+  scene::Domain domain;
+  for (int d = 0; d < dimension; ++d) {
+    domain.box.min[d] = container.inner.min[d] - wall_thickness;
+    domain.box.max[d] = container.inner.max[d] + wall_thickness;
+  }
+  const int up = dimension - 1;
+  if (container.open_top) domain.box.max[up] += container.inner.max[up] - container.inner.min[up];
+  return domain;
+}
+
+Vec default_gravity(int dimension) {
+  Vec gravity{};
+  gravity[dimension - 1] = -standard_gravity;  // up is the last axis
+  return gravity;
+}
+
+// The solver places particles at anchor + (k + 1/2)·spacing on every axis (see
+// solvers/particle_sampling.hpp); a fluid block holding none of those points would be silently
+// empty, so the reader finds one.
+
+bool axis_holds_lattice_point(double anchor, double spacing, double lower, double upper) {
+  const double first = std::floor((lower - anchor) / spacing - 0.5);
+  for (double k = first; k <= first + 2; ++k) {
+    const double point = anchor + (k + 0.5) * spacing;
+    if (point >= lower && point < upper) return true;
+  }
+  return false;
+}
+
+std::vector<double> lattice_points_between(double anchor, double spacing, double lower, double upper) {
+  std::vector<double> points;
+  const double first = std::floor((lower - anchor) / spacing - 0.5);
+  for (double k = first; anchor + (k + 0.5) * spacing < upper; ++k) {
+    const double point = anchor + (k + 0.5) * spacing;
+    if (point >= lower) points.push_back(point);
+  }
+  return points;
+}
+
+bool holds_lattice_point(const scene::Box& box, const Vec& anchor, double spacing, int dimension) {
+  for (int d = 0; d < dimension; ++d) {
+    if (!axis_holds_lattice_point(anchor[d], spacing, box.min[d], box.max[d])) return false;
+  }
+  return true;
+}
+
+bool holds_lattice_point(const scene::Ball& ball, const Vec& anchor, double spacing, int dimension) {
+  // Every point of space lies within half a cell diagonal of a lattice point.
+  const double half_diagonal = 0.5 * spacing * std::sqrt(static_cast<double>(dimension));
+  if (ball.radius > half_diagonal * (1 + 1e-9)) return true;
+  // A smaller ball spans at most two lattice points per axis: try them all.
+  std::array<std::vector<double>, 3> candidates{std::vector<double>{0}, std::vector<double>{0}, std::vector<double>{0}};
+  for (int d = 0; d < dimension; ++d) {
+    candidates[d] =
+        lattice_points_between(anchor[d], spacing, ball.centre[d] - ball.radius, ball.centre[d] + ball.radius);
+  }
+  for (const double x : candidates[0]) {
+    for (const double y : candidates[1]) {
+      for (const double z : candidates[2]) {
+        const double dx = x - ball.centre[0], dy = y - ball.centre[1], dz = z - ball.centre[2];
+        if (dx * dx + dy * dy + dz * dz < ball.radius * ball.radius) return true;
+      }
+    }
+  }
+  return false;
+}
+
+/// Reads a parsed document into a scene, refusing the first thing that is wrong.
+class SceneParser {
+ public:
+  explicit SceneParser(std::string file) : file_(std::move(file)) {}
+
+  scene::Scene parse(const json& document) {
+    const Node root{&document, ""};
+    expect_object(root, {"dimension", "particle_spacing", "kernel", "domain", "materials", "fluid", "walls", "gravity",
+                         "solver", "time", "output"});
+    scene::Scene scene;
+    scene.source = file_;
+    scene.dimension = dimension_ = read_dimension(child(root, "dimension"));
+    scene.particle_spacing = spacing_ = number(child(root, "particle_spacing"), positive);
+    if (const Node kernel = child(root, "kernel"); kernel.present()) read_kernel(kernel, scene);
+    scene.walls.layers = required_wall_layers(scene.kernel, scene.smoothing_ratio);
+    scene.materials = read_materials(child(root, "materials"));
+    scene.fluid = read_fluid(child(root, "fluid"), scene.materials);
+    if (const Node walls = child(root, "walls"); walls.present()) read_walls(walls, scene);
+    scene.domain = read_domain(child(root, "domain"), scene.walls);
+    scene.gravity = default_gravity(dimension_);
+    read_optional(root, "gravity", scene.gravity);
+    if (const Node solver = child(root, "solver"); solver.present()) read_solver(solver, scene.solver);
+    scene.time = read_time(child(root, "time"));
+    if (const Node output = child(root, "output"); output.present()) scene.output = read_output(output);
+    check_geometry(scene);
+    return scene;
+  }
+
+ private:
+  [[noreturn]] void fail(std::string path, std::string expected, std::string found) const {
+    throw SceneError(file_, std::move(path), std::move(expected), std::move(found));
+  }
+
+  /// Fails at `node`, describing what is there.
+  [[noreturn]] void fail(const Node& node, std::string expected) const {
+    fail(node.path, std::move(expected), node.present() ? describe(*node.value) : std::string(missing_key));
+  }
+
+  // --- Values. Each reader fails with its expectation where the value is absent or wrong.
+
+  /// An object with no keys but `keys`.
+  void expect_object(const Node& node, std::initializer_list<std::string_view> keys) const {
+    if (!node.present() || !node.value->is_object()) fail(node, "an object with the keys " + quoted_list(keys));
+    for (const auto& member : node.value->items()) {
+      if (std::find(keys.begin(), keys.end(), member.key()) == keys.end()) {
+        fail(node.path + "/" + pointer_token(member.key()), "one of the keys " + quoted_list(keys),
+             "the unknown key \"" + member.key() + "\"");
+      }
+    }
+  }
+
+  /// An array of at least `least` elements.
+  std::vector<Node> elements(const Node& node, std::size_t least, std::string expected) const {
+    if (!node.present() || !node.value->is_array() || node.value->size() < least) fail(node, std::move(expected));
+    std::vector<Node> result;
+    for (std::size_t i = 0; i < node.value->size(); ++i) result.push_back(element(node, i));
+    return result;
+  }
+
+  template <class Accepts>
+  double number(const Node& node, std::string_view expected, Accepts accepts) const {
+    const bool is_finite_number = node.present() && node.value->is_number() && std::isfinite(node.value->get<double>());
+    if (!is_finite_number || !accepts(node.value->get<double>())) fail(node, std::string(expected));
+    return node.value->get<double>();
+  }
+
+  double number(const Node& node, const NumberRule& rule) const { return number(node, rule.expected, rule.accepts); }
+
+  int read_dimension(const Node& node) const {
+    if (!node.present() || !node.value->is_number_integer()) fail(node, "2 or 3");
+    const auto dimension = node.value->get<std::int64_t>();
+    if (dimension != 2 && dimension != 3) fail(node, "2 or 3");
+    return static_cast<int>(dimension);
+  }
+
+  bool boolean(const Node& node) const {
+    if (!node.present() || !node.value->is_boolean()) fail(node, "true or false");
+    return node.value->get<bool>();
+  }
+
+  std::string text(const Node& node) const {
+    if (!node.present() || !node.value->is_string() || node.value->get_ref<const std::string&>().empty()) {
+      fail(node, "a non-empty string");
+    }
+    return node.value->get<std::string>();
+  }
+
+  template <class E, std::size_t N>
+  E choice(const Node& node, const std::array<Named<E>, N>& names) const {
+    std::array<std::string_view, N> spellings;
+    std::transform(names.begin(), names.end(), spellings.begin(), [](const Named<E>& named) { return named.name; });
+    const std::string expected = "one of " + quoted_list(spellings);
+    if (!node.present() || !node.value->is_string()) fail(node, expected);
+    for (const Named<E>& named : names) {
+      if (named.name == node.value->get_ref<const std::string&>()) return named.value;
+    }
+    fail(node, expected);
+  }
+
+  KernelType kernel_type(const Node& node) const {
+    std::array<std::string_view, all_kernel_types.size()> spellings;
+    std::transform(all_kernel_types.begin(), all_kernel_types.end(), spellings.begin(), kernel_name);
+    const std::string expected = "one of " + quoted_list(spellings);
+    if (!node.present() || !node.value->is_string()) fail(node, expected);
+    const auto type = kernel_from_name(node.value->get_ref<const std::string&>());
+    if (!type) fail(node, expected);
+    return *type;
+  }
+
+  /// Exactly `dimension` numbers; a 2D vector's third component stays 0.
+  Vec vector(const Node& node) const {
+    const std::string expected = dimension_ == 2 ? "an array of 2 numbers [x, y]" : "an array of 3 numbers [x, y, z]";
+    if (!node.present() || !node.value->is_array() || node.value->size() != static_cast<std::size_t>(dimension_)) {
+      fail(node, expected);
+    }
+    Vec result{};
+    for (int d = 0; d < dimension_; ++d) result[d] = number(element(node, d), any_number);
+    return result;
+  }
+
+  std::array<bool, 3> flags(const Node& node) const {
+    const std::string expected = "an array of " + std::to_string(dimension_) + " booleans, one per axis";
+    if (!node.present() || !node.value->is_array() || node.value->size() != static_cast<std::size_t>(dimension_)) {
+      fail(node, expected);
+    }
+    std::array<bool, 3> result{};
+    for (int d = 0; d < dimension_; ++d) result[d] = boolean(element(node, d));
+    return result;
+  }
+
+  // Optional keys keep the model's default where they are absent.
+
+  void read_optional(const Node& object, std::string_view key, double& target, const NumberRule& rule) const {
+    if (const Node node = child(object, key); node.present()) target = number(node, rule);
+  }
+
+  void read_optional(const Node& object, std::string_view key, bool& target) const {
+    if (const Node node = child(object, key); node.present()) target = boolean(node);
+  }
+
+  void read_optional(const Node& object, std::string_view key, Vec& target) const {
+    if (const Node node = child(object, key); node.present()) target = vector(node);
+  }
+
+  template <class E, std::size_t N>
+  void read_optional(const Node& object, std::string_view key, E& target, const std::array<Named<E>, N>& names) const {
+    if (const Node node = child(object, key); node.present()) target = choice(node, names);
+  }
+
+  // --- Shapes
+
+  /// The "min" and "max" corners of an object already checked for its keys.
+  scene::Box corners(const Node& object) const {
+    const scene::Box box{vector(child(object, "min")), vector(child(object, "max"))};
+    for (int d = 0; d < dimension_; ++d) {
+      if (!(box.max[d] > box.min[d])) {
+        fail(element(child(object, "max"), d),
+             "a number > min" + axis_index(d) + " (" + format_number(box.min[d]) + ")");
+      }
+    }
+    return box;
+  }
+
+  scene::Box read_box(const Node& node) const {
+    expect_object(node, {"min", "max"});
+    return corners(node);
+  }
+
+  scene::Ball read_ball(const Node& node) const {
+    expect_object(node, {"centre", "radius"});
+    return {vector(child(node, "centre")), number(child(node, "radius"), positive)};
+  }
+
+  scene::Plane read_plane(const Node& node) const {
+    expect_object(node, {"point", "normal"});
+    const Node normal = child(node, "normal");
+    const scene::Plane plane{vector(child(node, "point")), vector(normal)};
+    if (plane.normal == Vec{}) fail(normal, "a non-zero vector");
+    return plane;
+  }
+
+  /// The one key of `object` among `shapes`.
+  std::string_view shape_key(const Node& object, std::initializer_list<std::string_view> shapes) const {
+    std::vector<std::string_view> given;
+    std::copy_if(shapes.begin(), shapes.end(), std::back_inserter(given),
+                 [&](std::string_view shape) { return child(object, shape).present(); });
+    if (given.size() != 1) {
+      fail(object.path, "exactly one shape key of " + quoted_list(shapes), given.empty() ? "none" : quoted_list(given));
+    }
+    return given.front();
+  }
+
+  // --- Sections
+
+  void read_kernel(const Node& node, scene::Scene& scene) const {
+    expect_object(node, {"type", "smoothing_ratio"});
+    if (const Node type = child(node, "type"); type.present()) scene.kernel = kernel_type(type);
+    read_optional(node, "smoothing_ratio", scene.smoothing_ratio, positive);
+  }
+
+  std::vector<scene::Material> read_materials(const Node& node) const {
+    std::vector<scene::Material> materials;
+    for (const Node& entry : elements(node, 1, "a non-empty array of materials")) {
+      materials.push_back(read_material(entry, materials));
+    }
+    return materials;
+  }
+
+  scene::Material read_material(const Node& node, const std::vector<scene::Material>& earlier) const {
+    expect_object(node, {"name", "rest_density", "kinematic_viscosity", "sound_speed", "max_speed"});
+    scene::Material material;
+    const Node name = child(node, "name");
+    material.name = text(name);
+    const auto same_name = [&](const scene::Material& other) { return other.name == material.name; };
+    if (std::any_of(earlier.begin(), earlier.end(), same_name)) fail(name, "a name no earlier material has");
+    read_optional(node, "rest_density", material.rest_density, positive);
+    read_optional(node, "kinematic_viscosity", material.kinematic_viscosity, non_negative);
+    // The speed of sound is either given or derived from the expected maximum speed, never both.
+    const Node sound_speed = child(node, "sound_speed");
+    const Node max_speed = child(node, "max_speed");
+    if (sound_speed.present() == max_speed.present()) {
+      fail(node.path, "exactly one of \"sound_speed\" and \"max_speed\"", sound_speed.present() ? "both" : "neither");
+    }
+    if (sound_speed.present()) {
+      material.sound_speed = number(sound_speed, positive);
+    } else {
+      material.max_speed = number(max_speed, positive);
+    }
+    return material;
+  }
+
+  std::vector<scene::FluidBlock> read_fluid(const Node& node, const std::vector<scene::Material>& materials) const {
+    std::vector<scene::FluidBlock> fluid;
+    for (const Node& entry : elements(node, 1, "a non-empty array of fluid blocks")) {
+      expect_object(entry, {"material", "box", "ball"});
+      scene::FluidBlock block;
+      block.material = material_index(child(entry, "material"), materials);
+      const std::string_view shape = shape_key(entry, {"box", "ball"});
+      if (shape == "box") {
+        block.shape = read_box(child(entry, shape));
+      } else {
+        block.shape = read_ball(child(entry, shape));
+      }
+      fluid.push_back(block);
+    }
+    return fluid;
+  }
+
+  std::size_t material_index(const Node& node, const std::vector<scene::Material>& materials) const {
+    std::vector<std::string_view> names;
+    for (const scene::Material& material : materials) names.push_back(material.name);
+    const std::string expected = "the name of a material: " + quoted_list(names);
+    if (!node.present() || !node.value->is_string()) fail(node, expected);
+    const auto found = std::find(names.begin(), names.end(), node.value->get_ref<const std::string&>());
+    if (found == names.end()) fail(node, expected);
+    return static_cast<std::size_t>(found - names.begin());
+  }
+
+  void read_walls(const Node& node, scene::Scene& scene) const {
+    expect_object(node, {"layers", "slip", "container", "obstacles"});
+    scene::Walls& walls = scene.walls;
+    if (const Node layers = child(node, "layers"); layers.present()) {
+      walls.layers = read_layers(layers, scene);
+    }
+    read_optional(node, "slip", walls.slip, wall_slip_names);
+    if (const Node container = child(node, "container"); container.present()) {
+      expect_object(container, {"min", "max", "open_top"});
+      walls.container = scene::Container{corners(container)};
+      read_optional(container, "open_top", walls.container->open_top);
+    }
+    if (const Node obstacles = child(node, "obstacles"); obstacles.present()) {
+      for (const Node& entry : elements(obstacles, 0, "an array of obstacles")) {
+        walls.obstacles.push_back(read_obstacle(entry));
+      }
+    }
+  }
+
+  /// Fewer layers than the kernel support leave a fluid particle at a wall with a truncated
+  /// kernel: the wall lets fluid through or pushes it too weakly.
+  int read_layers(const Node& node, const scene::Scene& scene) const {
+    const int least = required_wall_layers(scene.kernel, scene.smoothing_ratio);
+    const double support_in_spacings = static_cast<double>(kernel_support_factor(scene.kernel)) * scene.smoothing_ratio;
+    const std::string expected = "an integer >= " + std::to_string(least) + " (ceil(kernel support / spacing), " +
+                                 "the support being " + format_number(support_in_spacings) + " spacings)";
+    if (!node.present() || !node.value->is_number_integer()) fail(node, expected);
+    const auto layers = node.value->get<std::int64_t>();
+    if (layers < least || layers > std::numeric_limits<int>::max()) fail(node, expected);
+    return static_cast<int>(layers);
+  }
+
+  std::variant<scene::Box, scene::Ball, scene::Plane> read_obstacle(const Node& node) const {
+    expect_object(node, {"box", "ball", "plane"});
+    const std::string_view shape = shape_key(node, {"box", "ball", "plane"});
+    if (shape == "box") return read_box(child(node, shape));
+    if (shape == "ball") return read_ball(child(node, shape));
+    return read_plane(child(node, shape));
+  }
+
+  scene::Domain read_domain(const Node& node, const scene::Walls& walls) const {
+    if (!node.present()) {
+      if (!walls.container) {
+        fail(node,
+             "an object with the keys \"min\", \"max\", \"periodic\" (only a scene with a wall container, "
+             "from which the domain is derived, may leave it out)");
+      }
+      return derived_domain(*walls.container, walls.layers * spacing_, dimension_);
+    }
+    expect_object(node, {"min", "max", "periodic"});
+    scene::Domain domain{corners(node)};
+    if (const Node periodic = child(node, "periodic"); periodic.present()) domain.periodic = flags(periodic);
+    return domain;
+  }
+
+  void read_solver(const Node& node, scene::Solver& solver) const {
+    expect_object(node, {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha",
+                         "beta", "cfl", "viscous_number", "force_number", "max_density_ratio"});
+    read_optional(node, "scheme", solver.scheme, scheme_names);
+    read_optional(node, "equation_of_state", solver.equation_of_state, equation_of_state_names);
+    read_optional(node, "tait_exponent", solver.tait_exponent, positive);
+    read_optional(node, "density", solver.density, density_method_names);
+    read_optional(node, "delta_sph", solver.delta_sph, non_negative);
+    read_optional(node, "viscosity", solver.viscosity, viscosity_model_names);
+    read_optional(node, "alpha", solver.alpha, non_negative);
+    read_optional(node, "beta", solver.beta, non_negative);
+    read_optional(node, "cfl", solver.cfl, in_unit_interval);
+    read_optional(node, "viscous_number", solver.viscous_number, positive);
+    read_optional(node, "force_number", solver.force_number, positive);
+    read_optional(node, "max_density_ratio", solver.max_density_ratio, above_one);
+  }
+
+  scene::Time read_time(const Node& node) const {
+    expect_object(node, {"start", "end", "output_interval"});
+    scene::Time time;
+    read_optional(node, "start", time.start, any_number);
+    time.end = number(child(node, "end"), "a number > the start time (" + format_number(time.start) + ")",
+                      [&](double end) { return end > time.start; });
+    read_optional(node, "output_interval", time.output_interval, positive);
+    return time;
+  }
+
+  scene::Output read_output(const Node& node) const {
+    expect_object(node, {"fields"});
+    scene::Output output;
+    if (const Node fields = child(node, "fields"); fields.present()) {
+      output.fields.clear();
+      for (const Node& entry : elements(fields, 1, "a non-empty array of field names")) {
+        output.fields.push_back(field_name(entry, output.fields));
+      }
+    }
+    return output;
+  }
+
+  std::string field_name(const Node& node, const std::vector<std::string>& earlier) const {
+    const std::string expected = "one of " + quoted_list(scene::output_field_names);
+    if (!node.present() || !node.value->is_string()) fail(node, expected);
+    const std::string& name = node.value->get_ref<const std::string&>();
+    if (std::find(scene::output_field_names.begin(), scene::output_field_names.end(), name) ==
+        scene::output_field_names.end()) {
+      fail(node, expected);
+    }
+    if (std::find(earlier.begin(), earlier.end(), name) != earlier.end()) fail(node, "a field not listed before");
+    return name;
+  }
+
+  // --- Geometry: does the scene leave the solver something sensible to do?
+
+  void check_geometry(const scene::Scene& scene) const {
+    if (scene.walls.container) check_container_in_domain(*scene.walls.container, scene.walls.layers, scene.domain.box);
+    const Vec& lattice_anchor = scene.walls.container ? scene.walls.container->inner.min : scene.domain.box.min;
+    for (std::size_t k = 0; k < scene.fluid.size(); ++k) {
+      const auto& shape = scene.fluid[k].shape;
+      const std::string path =
+          "/fluid/" + std::to_string(k) + (std::holds_alternative<scene::Box>(shape) ? "/box" : "/ball");
+      if (scene.walls.container) check_inside(shape, path, scene.walls.container->inner, "the container's inner box");
+      check_inside(shape, path, scene.domain.box, "the domain");
+      const bool holds_point = std::visit(
+          [&](const auto& s) { return holds_lattice_point(s, lattice_anchor, spacing_, dimension_); }, shape);
+      if (!holds_point) {
+        fail(path,
+             "a shape holding at least one particle position (a lattice point " +
+                 format_vector(lattice_anchor, dimension_) + " + (k + 1/2) x " + format_number(spacing_) + ")",
+             format_shape(shape, dimension_));
+      }
+    }
+  }
+
+  /// The wall particles must lie inside the domain, which would otherwise remove them. An open
+  /// top has no wall above the container's rim.
+  void check_container_in_domain(const scene::Container& container, int layers, const scene::Box& domain) const {
+    const double wall = layers * spacing_;
+    const std::string wall_text = std::to_string(layers) + " wall layers of " + format_number(spacing_);
+    for (int d = 0; d < dimension_; ++d) {
+      const std::string axis = axis_index(d);
+      if (container.inner.min[d] - wall < domain.min[d] - tolerance()) {
+        fail("/walls/container/min/" + std::to_string(d),
+             "a number >= " + format_number(domain.min[d] + wall) + " (the domain's min" + axis + " plus " + wall_text +
+                 ")",
+             format_number(container.inner.min[d]));
+      }
+      const bool open_above = container.open_top && d == dimension_ - 1;
+      const double wall_above = open_above ? 0 : wall;
+      if (container.inner.max[d] + wall_above > domain.max[d] + tolerance()) {
+        fail("/walls/container/max/" + std::to_string(d),
+             "a number <= " + format_number(domain.max[d] - wall_above) + " (the domain's max" + axis +
+                 (open_above ? "" : " minus " + wall_text) + ")",
+             format_number(container.inner.max[d]));
+      }
+    }
+  }
+
+  void check_inside(const std::variant<scene::Box, scene::Ball>& shape, const std::string& path,
+                    const scene::Box& region, const std::string& region_name) const {
+    if (const auto* ball = std::get_if<scene::Ball>(&shape)) {
+      for (int d = 0; d < dimension_; ++d) {
+        if (ball->centre[d] - ball->radius < region.min[d] - tolerance() ||
+            ball->centre[d] + ball->radius > region.max[d] + tolerance()) {
+          fail(path, "a ball inside " + region_name + " " + format_box(region, dimension_),
+               format_shape(shape, dimension_));
+        }
+      }
+      return;
+    }
+    const auto& box = std::get<scene::Box>(shape);
+    for (int d = 0; d < dimension_; ++d) {
+      const std::string axis = axis_index(d);
+      if (box.min[d] < region.min[d] - tolerance()) {
+        fail(path + "/min/" + std::to_string(d),
+             "a number >= " + format_number(region.min[d]) + " (the min" + axis + " of " + region_name + ")",
+             format_number(box.min[d]));
+      }
+      if (box.max[d] > region.max[d] + tolerance()) {
+        fail(path + "/max/" + std::to_string(d),
+             "a number <= " + format_number(region.max[d]) + " (the max" + axis + " of " + region_name + ")",
+             format_number(box.max[d]));
+      }
+    }
+  }
+
+  /// Slack for comparing coordinates the user wrote as decimals (0.1 + 0.2 is not 0.3).
+  double tolerance() const { return 1e-9 * spacing_; }
+
+  std::string file_;
+  int dimension_ = 2;
+  double spacing_ = 0;
+};
+
+}  // namespace
+
+scene::Scene parse_scene(std::string_view json_text, std::string source_name) {
+  const json document = parse_json(json_text, source_name);
+  return SceneParser(std::move(source_name)).parse(document);
+}
+
+scene::Scene read_scene_file(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) {
+    const char* found = !std::filesystem::exists(file, error)        ? "no such file"
+                        : std::filesystem::is_directory(file, error) ? "a directory"
+                                                                     : "something other than a regular file";
+    throw SceneError(name, "", "a scene file", found);
+  }
+  std::ifstream stream(file, std::ios::binary);
+  const std::string contents{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+  if (!stream.is_open() || stream.bad())
+    throw SceneError(name, "", "a readable scene file", "a file that cannot be read");
+  return parse_scene(contents, name);
+}
+
+}  // namespace tide::io

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 (bookworm) packages TideSPH needs to build, test and benchmark.
+# Idempotent and quiet: when every package is present it changes nothing and needs no root.
+set -euo pipefail
+
+packages=(
+  build-essential cmake          # compilers, make, CMake >= 3.22
+  libeigen3-dev libtbb-dev       # core: small-vector math, the parallel layer (oneTBB)
+  libhdf5-dev nlohmann-json3-dev # io: output files, scene files
+  libcli11-dev                   # apps: the tide command line
+  libgtest-dev libbenchmark-dev  # tests/, bench/
+  clang clang-format             # second compiler, formatting
+  libclang-rt-14-dev             # sanitizer runtimes for clang
+  gnuplot-nox                    # plots of benchmark and validation results
+)
+
+installed() {
+  [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
+}
+
+has_candidate() {
+  local candidate
+  candidate=$(apt-cache policy "$1" 2>/dev/null | sed -n 's/^ *Candidate: *//p')
+  [[ -n "$candidate" && "$candidate" != "(none)" ]]
+}
+
+missing=()
+for package in "${packages[@]}"; do
+  installed "$package" || missing+=("$package")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages are installed"
+  exit 0
+fi
+
+if ((EUID != 0)); then
+  echo "install-deps: missing packages: ${missing[*]}" >&2
+  echo "install-deps: run this script as root, or: sudo apt-get install ${missing[*]}" >&2
+  exit 1
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+
+# Runs apt-get with its output held back; shows the output only if apt-get fails.
+apt_get() {
+  local log status=0
+  log=$(mktemp)
+  apt-get -q -o Dpkg::Use-Pty=0 "$@" >"$log" 2>&1 || status=$?
+  if ((status != 0)); then cat "$log" >&2; fi
+  rm -f "$log"
+  return "$status"
+}
+
+# Refresh the package lists only when one of the missing packages has no candidate in them
+# (a fresh image ships without lists); otherwise install from the lists at hand.
+for package in "${missing[@]}"; do
+  if ! has_candidate "$package"; then
+    echo "install-deps: updating the package lists"
+    apt_get update
+    break
+  fi
+done
+
+echo "install-deps: installing ${missing[*]}"
+if ! apt_get install -y --no-install-recommends "${missing[@]}"; then
+  # Stale lists point at files the mirror no longer has: refresh once and retry.
+  echo "install-deps: install failed; updating the package lists and retrying"
+  apt_get update
+  apt_get install -y --no-install-recommends "${missing[@]}"
+fi
+
+still_missing=()
+for package in "${missing[@]}"; do
+  installed "$package" || still_missing+=("$package")
+done
+if ((${#still_missing[@]} != 0)); then
+  echo "install-deps: could not install: ${still_missing[*]}" >&2
+  exit 1
+fi
+echo "install-deps: done"

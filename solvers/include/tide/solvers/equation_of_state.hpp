@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cmath>
+
+#include "tide/core/scene.hpp"
+#include "tide/core/types.hpp"
+
+namespace tide {
+
+/// Weakly compressible equation of state p(ρ) and its inverse.
+/// Tait (Monaghan 1994; Batchelor): p = B((ρ/ρ0)^γ − 1) with B = ρ0 c0² / γ.
+/// Linear: p = c0² (ρ − ρ0).
+/// Both have sound speed c0 at rest density, so c0 = 10 v_max keeps |ρ/ρ0 − 1| ≈ 1%.
+class EquationOfState {
+ public:
+  EquationOfState(scene::EquationOfState kind, Real rest_density, Real sound_speed, Real exponent)
+      : tait_(kind == scene::EquationOfState::tait),
+        rest_density_(rest_density),
+        sound_speed_(sound_speed),
+        exponent_(exponent),
+        stiffness_(tait_ ? rest_density * sound_speed * sound_speed / exponent : sound_speed * sound_speed) {}
+
+  Real pressure(Real density) const {
+    if (tait_) return stiffness_ * (std::pow(density / rest_density_, exponent_) - Real(1));
+    return stiffness_ * (density - rest_density_);
+  }
+
+  Real density(Real pressure) const {
+    if (tait_) return rest_density_ * std::pow(std::max(pressure / stiffness_ + Real(1), Real(0)), Real(1) / exponent_);
+    return rest_density_ + pressure / stiffness_;
+  }
+
+  Real rest_density() const { return rest_density_; }
+  Real sound_speed() const { return sound_speed_; }
+
+ private:
+  bool tait_;
+  Real rest_density_;
+  Real sound_speed_;
+  Real exponent_;
+  Real stiffness_;
+};
+
+}  // namespace tide

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "tide/core/types.hpp"
+
+namespace tide {
+
+/// Thrown when a run leaves the range where its results mean anything: a non-finite value, a
+/// density beyond the scene's band, or a particle faster than the speed of sound.
+class InstabilityError : public std::runtime_error {
+ public:
+  InstabilityError(Index particle_id, std::string field, double value, std::uint64_t step, double time,
+                   const std::string& reason);
+
+  Index particle_id() const { return particle_id_; }
+  const std::string& field() const { return field_; }
+  double value() const { return value_; }
+  std::uint64_t step() const { return step_; }
+  double time() const { return time_; }
+
+ private:
+  Index particle_id_;
+  std::string field_;
+  double value_;
+  std::uint64_t step_;
+  double time_;
+};
+
+}  // namespace tide

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+#include "tide/core/types.hpp"
+
+namespace tide {
+
+/// Which stability limit set a time step.
+enum class TimeStepLimit { acoustic, viscous, force };
+inline constexpr std::size_t time_step_limit_count = 3;
+
+std::string_view time_step_limit_name(TimeStepLimit limit);
+
+struct TimeStepRule {
+  Real smoothing_length = 0;
+  Real sound_speed = 0;
+  Real kinematic_viscosity = 0;  // 0: no viscous limit
+  Real cfl = Real(0.25);
+  Real viscous_number = Real(0.125);
+  Real force_number = Real(0.25);
+};
+
+struct TimeStep {
+  Real dt = 0;
+  TimeStepLimit limit = TimeStepLimit::acoustic;
+};
+
+/// The adaptive step of explicit WCSPH: the smallest of the acoustic limit
+/// cfl·h/(c0 + |v|max), the viscous limit viscous_number·h²/ν and the force limit
+/// force_number·sqrt(h/|a|max) (Monaghan 1992; Morris, Fox & Zhu 1997).
+TimeStep choose_time_step(const TimeStepRule& rule, Real max_speed, Real max_acceleration);
+
+/// Counts of binding limits over a stretch of steps.
+struct TimeStepTally {
+  std::array<std::size_t, time_step_limit_count> counts{};
+  void add(TimeStepLimit limit) { ++counts[static_cast<std::size_t>(limit)]; }
+  std::size_t total() const { return counts[0] + counts[1] + counts[2]; }
+  TimeStepLimit most_frequent() const;
+};
+
+}  // namespace tide

@@ -1,0 +1,47 @@
+#pragma once
+
+// Density rate from the continuity equation, with δ-SPH density diffusion.
+
+#include <cmath>
+
+#include "tide/core/parallel.hpp"
+#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/wcsph.hpp"
+
+namespace tide::passes {
+
+/// Dρ_i/dt = Σ_j m_j v_ij·∇W_ij (Monaghan 1992, eq. 2.9) over fluid and wall neighbours (walls at
+/// rest), plus the density diffusion of Molteni & Colagrossi 2009 (eq. 9):
+/// δ h c0 Σ_j 2 (ρ_j − ρ_i) (x_ji·∇W_ij) / (r² + 0.01 h²) · m_j/ρ_j, between fluid particles only.
+template <int D, class Kernel>
+void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
+                const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
+                const WallFields<D>& w, Real delta, Real sound_speed) {
+  const auto x = std::as_const(fluid)[f.position];
+  const auto v = std::as_const(fluid)[f.velocity];
+  const auto mass = std::as_const(fluid)[f.mass];
+  const auto density = std::as_const(fluid)[f.density];
+  const auto wall_x = walls[w.position];
+  const auto wall_mass = walls[w.mass];
+  auto rate = fluid[f.density_rate];
+  const Real h = kernel.smoothing_length();
+  const Real diffusion = delta * h * sound_speed;
+  for_each_particle(fluid.size(), [&](std::size_t i) {
+    const Vector<D> v_i = v[i];
+    const Real rho_i = density[i];
+    Real sum = 0;
+    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
+      if (j == i) return;
+      const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
+      sum += mass[j] * (v_i - v[j]).dot(grad_w);
+      const Real rho_j = density[j];
+      sum += diffusion * 2 * (rho_j - rho_i) * (-x_ij.dot(grad_w)) / (r2 + Real(0.01) * h * h) * (mass[j] / rho_j);
+    });
+    neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
+      sum += wall_mass[b] * v_i.dot(kernel.gradient(x_ib, std::sqrt(r2)));
+    });
+    rate[i] = sum;
+  });
+}
+
+}  // namespace tide::passes

@@ -1,0 +1,242 @@
+#include "tide/solvers/wcsph.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include "passes/continuity.hpp"
+#include "passes/density_summation.hpp"
+#include "passes/momentum.hpp"
+#include "passes/wall_state.hpp"
+#include "tide/core/parallel.hpp"
+#include "tide/solvers/instability.hpp"
+#include "tide/solvers/particle_sampling.hpp"
+
+namespace tide {
+namespace {
+
+const scene::Material& single_material(const scene::Scene& scene) {
+  if (scene.materials.empty()) throw std::invalid_argument(scene.source + ": WCSPH needs a fluid material");
+  for (const auto& block : scene.fluid) {
+    if (block.material != scene.fluid.front().material)
+      throw std::invalid_argument(scene.source +
+                                  ": this WCSPH solver takes a single fluid material; several fluids need the "
+                                  "multiphase scheme");
+  }
+  return scene.materials.at(scene.fluid.empty() ? 0 : scene.fluid.front().material);
+}
+
+Real sound_speed_of(const scene::Material& material) {
+  // c0 = 10 v_max keeps density variations near 1% (Monaghan 1994).
+  return static_cast<Real>(material.sound_speed ? *material.sound_speed : 10 * material.max_speed.value_or(0));
+}
+
+template <int D>
+GridDomain<D> grid_domain(const scene::Scene& scene) {
+  GridDomain<D> domain;
+  domain.lower = to_vector<D>(scene.domain.box.min);
+  domain.upper = to_vector<D>(scene.domain.box.max);
+  for (int d = 0; d < D; ++d) domain.periodic[d] = scene.domain.periodic[d];
+  return domain;
+}
+
+template <int D>
+ParticleSet<D> make_particles(const std::vector<Vector<D>>& points, Real mass) {
+  ParticleSet<D> set;
+  set.append(points.size());
+  auto x = set[set.position()];
+  const auto m = set.add_scalar("mass");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    x.set(i, points[i]);
+    set[m][i] = mass;
+  }
+  return set;
+}
+
+// Per-step maxima and the first particle (lowest index) whose state is out of bounds.
+struct StateSummary {
+  Real max_speed_squared = 0;
+  Real max_acceleration_squared = 0;
+  std::size_t bad_particle = std::numeric_limits<std::size_t>::max();
+
+  static StateSummary combine(const StateSummary& a, const StateSummary& b) {
+    return {std::max(a.max_speed_squared, b.max_speed_squared),
+            std::max(a.max_acceleration_squared, b.max_acceleration_squared), std::min(a.bad_particle, b.bad_particle)};
+  }
+};
+
+}  // namespace
+
+template <int D>
+Wcsph<D>::Wcsph(const scene::Scene& scene)
+    : scene_(scene),
+      smoothing_length_(static_cast<Real>(scene.smoothing_ratio * scene.particle_spacing)),
+      kernel_(make_kernel<D>(scene.kernel, smoothing_length_)),
+      eos_(scene.solver.equation_of_state, static_cast<Real>(single_material(scene).rest_density),
+           sound_speed_of(single_material(scene)), static_cast<Real>(scene.solver.tait_exponent)),
+      kinematic_viscosity_(static_cast<Real>(single_material(scene).kinematic_viscosity)),
+      gravity_(to_vector<D>(scene.gravity)),
+      neighbors_(grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_) {
+  if (!(eos_.sound_speed() > 0))
+    throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
+  const Real particle_volume = std::pow(static_cast<Real>(scene.particle_spacing), Real(D));
+  const Real particle_mass = eos_.rest_density() * particle_volume;
+
+  fluid_ = make_particles<D>(sample_fluid<D>(scene), particle_mass);
+  fluid_fields_ = {fluid_.position(),         fluid_.add_vector("velocity"), fluid_.add_vector("acceleration"),
+                   fluid_.scalar("mass"),      fluid_.add_scalar("density"),  fluid_.add_scalar("pressure"),
+                   ScalarField{}};
+  if (scene.solver.density == scene::DensityMethod::continuity) {
+    fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
+    for (Real& rho : fluid_[fluid_fields_.density]) rho = eos_.rest_density();
+  }
+  walls_ = make_particles<D>(sample_walls<D>(scene), particle_mass);
+  wall_fields_ = {walls_.position(), walls_.add_vector("velocity"), walls_.scalar("mass"), walls_.add_scalar("density"),
+                  walls_.add_scalar("pressure")};
+
+  time_step_rule_.smoothing_length = smoothing_length_;
+  time_step_rule_.sound_speed = eos_.sound_speed();
+  time_step_rule_.kinematic_viscosity =
+      scene.solver.viscosity == scene::ViscosityModel::laminar ? kinematic_viscosity_ : Real(0);
+  time_step_rule_.cfl = static_cast<Real>(scene.solver.cfl);
+  time_step_rule_.viscous_number = static_cast<Real>(scene.solver.viscous_number);
+  time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
+  time_ = static_cast<Real>(scene.time.start);
+
+  neighbors_.set_walls(walls_);
+  neighbors_.update_fluid(fluid_);
+  compute_interactions();
+  check_state();
+}
+
+template <int D>
+void Wcsph<D>::compute_interactions() {
+  const bool summation = scene_.solver.density == scene::DensityMethod::summation;
+  passes::ViscositySettings viscosity{scene_.solver.viscosity,
+                                      scene_.walls.slip == scene::WallSlip::no_slip,
+                                      static_cast<Real>(scene_.solver.alpha),
+                                      static_cast<Real>(scene_.solver.beta),
+                                      eos_.sound_speed(),
+                                      kinematic_viscosity_,
+                                      smoothing_length_};
+  std::visit(
+      [&](const auto& kernel) {
+        if (summation) {
+          passes::density_summation<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
+                                       eos_, scene_.solver.clamp_negative_pressure);
+        } else {
+          const auto density = std::as_const(fluid_)[fluid_fields_.density];
+          auto pressure = fluid_[fluid_fields_.pressure];
+          const bool clamp = scene_.solver.clamp_negative_pressure;
+          for_each_particle(fluid_.size(), [&](std::size_t i) {
+            const Real p = eos_.pressure(density[i]);
+            pressure[i] = clamp ? std::max(p, Real(0)) : p;
+          });
+        }
+        passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, eos_, gravity_,
+                              scene_.solver.clamp_negative_pressure);
+        if (scene_.solver.viscosity == scene::ViscosityModel::artificial) {
+          passes::momentum<D, scene::ViscosityModel::artificial>(kernel, viscosity, fluid_, fluid_fields_, neighbors_,
+                                                                 walls_, wall_fields_, gravity_);
+        } else {
+          passes::momentum<D, scene::ViscosityModel::laminar>(kernel, viscosity, fluid_, fluid_fields_, neighbors_,
+                                                              walls_, wall_fields_, gravity_);
+        }
+      },
+      kernel_);
+}
+
+template <int D>
+void Wcsph<D>::compute_density_rate() {
+  std::visit(
+      [&](const auto& kernel) {
+        passes::continuity<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
+                              static_cast<Real>(scene_.solver.delta_sph), eos_.sound_speed());
+      },
+      kernel_);
+}
+
+template <int D>
+StepReport Wcsph<D>::step() {
+  StepReport report;
+  report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
+  const Real dt = report.time_step.dt;
+  {
+    // Kick (half step) and drift of velocity Verlet.
+    auto x = fluid_[fluid_fields_.position];
+    auto v = fluid_[fluid_fields_.velocity];
+    const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
+    for_each_particle(fluid_.size(), [&](std::size_t i) {
+      const Vector<D> half_step_velocity = v[i] + (dt / 2) * a[i];
+      v.set(i, half_step_velocity);
+      x.set(i, x[i] + dt * half_step_velocity);
+    });
+  }
+  report.removed = neighbors_.update_fluid(fluid_);
+  if (scene_.solver.density == scene::DensityMethod::continuity) {
+    compute_density_rate();
+    auto density = fluid_[fluid_fields_.density];
+    const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
+    for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] += dt * rate[i]; });
+  }
+  compute_interactions();
+  {
+    auto v = fluid_[fluid_fields_.velocity];
+    const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
+    for_each_particle(fluid_.size(), [&](std::size_t i) { v.set(i, v[i] + (dt / 2) * a[i]); });
+  }
+  time_ += dt;
+  ++step_count_;
+  check_state();
+  return report;
+}
+
+template <int D>
+void Wcsph<D>::check_state() {
+  const auto x = fluid_[fluid_fields_.position];
+  const auto v = fluid_[fluid_fields_.velocity];
+  const auto a = fluid_[fluid_fields_.acceleration];
+  const auto density = fluid_[fluid_fields_.density];
+  const Real rho0 = eos_.rest_density();
+  const Real ratio = static_cast<Real>(scene_.solver.max_density_ratio);
+  const bool check_low_density = scene_.solver.density == scene::DensityMethod::continuity;
+  const Real c0 = eos_.sound_speed();
+  auto out_of_bounds = [&](std::size_t i, Real speed2) {
+    const Real rho = density[i];
+    return !std::isfinite(x[i].squaredNorm() + speed2 + a[i].squaredNorm() + rho) || rho > ratio * rho0 ||
+           (check_low_density && rho < rho0 / ratio) || speed2 > c0 * c0;
+  };
+  const StateSummary summary = reduce(
+      fluid_.size(), StateSummary{},
+      [&](std::size_t i) {
+        const Real speed2 = v[i].squaredNorm();
+        return StateSummary{speed2, a[i].squaredNorm(),
+                            out_of_bounds(i, speed2) ? i : std::numeric_limits<std::size_t>::max()};
+      },
+      StateSummary::combine);
+  max_speed_ = std::sqrt(summary.max_speed_squared);
+  max_acceleration_ = std::sqrt(summary.max_acceleration_squared);
+  if (summary.bad_particle == std::numeric_limits<std::size_t>::max()) return;
+
+  const std::size_t i = summary.bad_particle;
+  const Index id = fluid_[fluid_.id()][i];
+  const double t = static_cast<double>(time_);
+  if (!std::isfinite(x[i].squaredNorm()))
+    throw InstabilityError(id, "position", static_cast<double>(x[i].norm()), step_count_, t, "not finite");
+  if (!std::isfinite(v[i].squaredNorm()))
+    throw InstabilityError(id, "velocity", static_cast<double>(v[i].norm()), step_count_, t, "not finite");
+  if (!std::isfinite(a[i].squaredNorm()))
+    throw InstabilityError(id, "acceleration", static_cast<double>(a[i].norm()), step_count_, t, "not finite");
+  if (!std::isfinite(density[i]) || density[i] > ratio * rho0 || density[i] < rho0 / ratio)
+    throw InstabilityError(id, "density", static_cast<double>(density[i]), step_count_, t,
+                           "outside [rho0/" + std::to_string(ratio) + ", " + std::to_string(ratio) + " rho0]");
+  throw InstabilityError(id, "speed", static_cast<double>(v[i].norm()), step_count_, t,
+                         "faster than the speed of sound c0 = " + std::to_string(c0) + " m/s");
+}
+
+template class Wcsph<2>;
+template class Wcsph<3>;
+
+}  // namespace tide

@@ -1,0 +1,495 @@
+#include "tide/io/scene_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <variant>
+
+namespace tide::io {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* file_name = "dam.json";
+
+/// A complete 2D dam break that sets every key; the bad-input tests each break one thing in it.
+json full_2d_scene() {
+  return json::parse(R"({
+    "dimension": 2,
+    "particle_spacing": 0.005,
+    "kernel": {"type": "cubic_spline", "smoothing_ratio": 1.2},
+    "domain": {"min": [-0.1, -0.1], "max": [1.7, 2.0], "periodic": [false, true]},
+    "materials": [{"name": "water", "rest_density": 998, "kinematic_viscosity": 1e-6, "max_speed": 3.1},
+                  {"name": "oil", "rest_density": 900, "sound_speed": 40}],
+    "fluid": [{"material": "water", "box": {"min": [0, 0], "max": [0.4, 0.8]}},
+              {"material": "oil", "ball": {"centre": [1.0, 0.5], "radius": 0.1}}],
+    "walls": {"layers": 4, "slip": "free_slip", "container": {"min": [0, 0], "max": [1.6, 1.2], "open_top": false},
+              "obstacles": [{"box": {"min": [0.8, 0], "max": [0.9, 0.1]}},
+                            {"ball": {"centre": [1.2, 0.1], "radius": 0.05}},
+                            {"plane": {"point": [0, 0.05], "normal": [0.1, 1]}}]},
+    "gravity": [0.5, -9.8],
+    "solver": {"scheme": "wcsph", "equation_of_state": "linear", "tait_exponent": 5, "density": "continuity",
+               "delta_sph": 0.2, "viscosity": "laminar", "alpha": 0.05, "beta": 0.1, "cfl": 0.3,
+               "viscous_number": 0.1, "force_number": 0.2, "max_density_ratio": 1.2},
+    "time": {"start": 0.5, "end": 2.0, "output_interval": 0.02},
+    "output": {"fields": ["position", "velocity", "id", "mass"]}
+  })");
+}
+
+/// The smallest valid scene: only the required keys and a domain.
+json minimal_scene() {
+  return json::parse(R"({
+    "dimension": 2,
+    "particle_spacing": 0.01,
+    "domain": {"min": [0, 0], "max": [1, 1]},
+    "materials": [{"name": "water", "max_speed": 2}],
+    "fluid": [{"material": "water", "box": {"min": [0, 0], "max": [0.5, 0.5]}}],
+    "time": {"end": 1}
+  })");
+}
+
+scene::Scene parse(const json& document) { return parse_scene(document.dump(), file_name); }
+
+json with(json document, const std::string& pointer, json value) {
+  document[json::json_pointer(pointer)] = std::move(value);
+  return document;
+}
+
+json without(json document, const std::string& pointer) {
+  const json::json_pointer key(pointer);
+  document[key.parent_pointer()].erase(key.back());
+  return document;
+}
+
+/// Parses `text` and returns the error it must raise.
+SceneError error_of(const std::string& text) {
+  try {
+    parse_scene(text, file_name);
+  } catch (const SceneError& error) {
+    return error;
+  }
+  ADD_FAILURE() << "no SceneError for " << text;
+  return SceneError("", "", "", "");
+}
+
+/// The scene must be refused at `key_path` with a message naming the file, the key path and
+/// containing `expectation`.
+void expect_refused(const json& document, const std::string& key_path, const std::string& expectation) {
+  const SceneError error = error_of(document.dump());
+  const std::string message = error.what();
+  EXPECT_EQ(error.file(), file_name) << message;
+  EXPECT_EQ(error.key_path(), key_path) << message;
+  EXPECT_NE(message.find(std::string(file_name) + ": " + key_path + ": expected "), std::string::npos) << message;
+  EXPECT_NE(message.find(expectation), std::string::npos) << message;
+  EXPECT_NE(error.expected().find(expectation), std::string::npos) << message;
+}
+
+scene::Vec vec(double x, double y, double z = 0) { return {x, y, z}; }
+
+// ---------------------------------------------------------------------------------------------
+// Valid scenes
+
+TEST(SceneReader, Full2DSceneRoundTrips) {
+  const scene::Scene s = parse(full_2d_scene());
+  EXPECT_EQ(s.source, file_name);
+  EXPECT_EQ(s.dimension, 2);
+  EXPECT_EQ(s.particle_spacing, 0.005);
+  EXPECT_EQ(s.kernel, KernelType::cubic_spline);
+  EXPECT_EQ(s.smoothing_ratio, 1.2);
+  EXPECT_EQ(s.domain.box.min, vec(-0.1, -0.1));
+  EXPECT_EQ(s.domain.box.max, vec(1.7, 2.0));
+  EXPECT_EQ(s.domain.periodic, (std::array<bool, 3>{false, true, false}));
+
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_EQ(s.materials[0].name, "water");
+  EXPECT_EQ(s.materials[0].rest_density, 998);
+  EXPECT_EQ(s.materials[0].kinematic_viscosity, 1e-6);
+  EXPECT_EQ(s.materials[0].max_speed, 3.1);
+  EXPECT_FALSE(s.materials[0].sound_speed);
+  EXPECT_EQ(s.materials[1].name, "oil");
+  EXPECT_EQ(s.materials[1].kinematic_viscosity, 0);
+  EXPECT_EQ(s.materials[1].sound_speed, 40);
+  EXPECT_FALSE(s.materials[1].max_speed);
+
+  ASSERT_EQ(s.fluid.size(), 2u);
+  EXPECT_EQ(s.fluid[0].material, 0u);
+  const auto& box = std::get<scene::Box>(s.fluid[0].shape);
+  EXPECT_EQ(box.min, vec(0, 0));
+  EXPECT_EQ(box.max, vec(0.4, 0.8));
+  EXPECT_EQ(s.fluid[1].material, 1u);
+  const auto& ball = std::get<scene::Ball>(s.fluid[1].shape);
+  EXPECT_EQ(ball.centre, vec(1.0, 0.5));
+  EXPECT_EQ(ball.radius, 0.1);
+
+  EXPECT_EQ(s.walls.layers, 4);
+  EXPECT_EQ(s.walls.slip, scene::WallSlip::free_slip);
+  ASSERT_TRUE(s.walls.container);
+  EXPECT_EQ(s.walls.container->inner.min, vec(0, 0));
+  EXPECT_EQ(s.walls.container->inner.max, vec(1.6, 1.2));
+  EXPECT_FALSE(s.walls.container->open_top);
+  ASSERT_EQ(s.walls.obstacles.size(), 3u);
+  EXPECT_EQ(std::get<scene::Box>(s.walls.obstacles[0]).max, vec(0.9, 0.1));
+  EXPECT_EQ(std::get<scene::Ball>(s.walls.obstacles[1]).radius, 0.05);
+  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[2]).point, vec(0, 0.05));
+  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[2]).normal, vec(0.1, 1));
+
+  EXPECT_EQ(s.gravity, vec(0.5, -9.8));
+  EXPECT_EQ(s.solver.scheme, scene::Scheme::wcsph);
+  EXPECT_EQ(s.solver.equation_of_state, scene::EquationOfState::linear);
+  EXPECT_EQ(s.solver.tait_exponent, 5);
+  EXPECT_EQ(s.solver.density, scene::DensityMethod::continuity);
+  EXPECT_EQ(s.solver.delta_sph, 0.2);
+  EXPECT_EQ(s.solver.viscosity, scene::ViscosityModel::laminar);
+  EXPECT_EQ(s.solver.alpha, 0.05);
+  EXPECT_EQ(s.solver.beta, 0.1);
+  EXPECT_EQ(s.solver.cfl, 0.3);
+  EXPECT_EQ(s.solver.viscous_number, 0.1);
+  EXPECT_EQ(s.solver.force_number, 0.2);
+  EXPECT_EQ(s.solver.max_density_ratio, 1.2);
+  EXPECT_EQ(s.time.start, 0.5);
+  EXPECT_EQ(s.time.end, 2.0);
+  EXPECT_EQ(s.time.output_interval, 0.02);
+  EXPECT_EQ(s.output.fields, (std::vector<std::string>{"position", "velocity", "id", "mass"}));
+}
+
+TEST(SceneReader, Full3DSceneRoundTrips) {
+  const scene::Scene s = parse_scene(R"({
+    "dimension": 3,
+    "particle_spacing": 0.02,
+    "kernel": {"type": "wendland_c4", "smoothing_ratio": 1.5},
+    "materials": [{"name": "water", "max_speed": 4}],
+    "fluid": [{"material": "water", "box": {"min": [0, 0, 0], "max": [0.5, 0.4, 0.6]}},
+              {"material": "water", "ball": {"centre": [0.8, 0.2, 0.3], "radius": 0.1}}],
+    "walls": {"layers": 4, "container": {"min": [0, 0, 0], "max": [1.2, 0.4, 0.8]},
+              "obstacles": [{"plane": {"point": [0, 0, 0.01], "normal": [0, 0, 1]}}]},
+    "gravity": [0, 0, -9.81],
+    "solver": {"cfl": 0.2},
+    "time": {"end": 1.5, "output_interval": 0.05},
+    "output": {"fields": ["position", "pressure", "acceleration"]}
+  })",
+                                     file_name);
+  EXPECT_EQ(s.dimension, 3);
+  EXPECT_EQ(s.particle_spacing, 0.02);
+  EXPECT_EQ(s.kernel, KernelType::wendland_c4);
+  EXPECT_EQ(s.smoothing_ratio, 1.5);
+  EXPECT_EQ(std::get<scene::Box>(s.fluid[0].shape).max, vec(0.5, 0.4, 0.6));
+  EXPECT_EQ(std::get<scene::Ball>(s.fluid[1].shape).centre, vec(0.8, 0.2, 0.3));
+  EXPECT_EQ(s.walls.layers, 4);
+  EXPECT_TRUE(s.walls.container->open_top);
+  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[0]).normal, vec(0, 0, 1));
+  EXPECT_EQ(s.gravity, vec(0, 0, -9.81));
+  EXPECT_EQ(s.solver.cfl, 0.2);
+  EXPECT_EQ(s.time.end, 1.5);
+  EXPECT_EQ(s.time.output_interval, 0.05);
+  EXPECT_EQ(s.output.fields, (std::vector<std::string>{"position", "pressure", "acceleration"}));
+  // Derived domain: 4 layers of 0.02 around the container, plus its height above the open top.
+  EXPECT_NEAR(s.domain.box.min[0], -0.08, 1e-12);
+  EXPECT_NEAR(s.domain.box.max[1], 0.48, 1e-12);
+  EXPECT_NEAR(s.domain.box.max[2], 0.8 + 0.08 + 0.8, 1e-12);
+}
+
+TEST(SceneReader, DefaultsComeFromTheSceneModel) {
+  const scene::Scene s = parse(minimal_scene());
+  const scene::Scene model;
+  EXPECT_EQ(s.kernel, model.kernel);
+  EXPECT_EQ(s.smoothing_ratio, model.smoothing_ratio);
+  EXPECT_EQ(s.domain.periodic, (std::array<bool, 3>{}));
+  EXPECT_EQ(s.materials[0].rest_density, 1000);
+  EXPECT_EQ(s.materials[0].kinematic_viscosity, 0);
+  EXPECT_EQ(s.walls.layers, model.walls.layers);
+  EXPECT_EQ(s.walls.slip, model.walls.slip);
+  EXPECT_FALSE(s.walls.container);
+  EXPECT_TRUE(s.walls.obstacles.empty());
+  EXPECT_EQ(s.gravity, vec(0, -9.81));
+  EXPECT_EQ(s.solver.equation_of_state, model.solver.equation_of_state);
+  EXPECT_EQ(s.solver.tait_exponent, model.solver.tait_exponent);
+  EXPECT_EQ(s.solver.density, model.solver.density);
+  EXPECT_EQ(s.solver.delta_sph, model.solver.delta_sph);
+  EXPECT_EQ(s.solver.viscosity, model.solver.viscosity);
+  EXPECT_EQ(s.solver.alpha, model.solver.alpha);
+  EXPECT_EQ(s.solver.beta, model.solver.beta);
+  EXPECT_EQ(s.solver.cfl, model.solver.cfl);
+  EXPECT_EQ(s.solver.viscous_number, model.solver.viscous_number);
+  EXPECT_EQ(s.solver.force_number, model.solver.force_number);
+  EXPECT_EQ(s.solver.max_density_ratio, model.solver.max_density_ratio);
+  EXPECT_EQ(s.time.start, model.time.start);
+  EXPECT_EQ(s.time.output_interval, model.time.output_interval);
+  EXPECT_EQ(s.output.fields, model.output.fields);
+}
+
+TEST(SceneReader, ThreeDimensionalGravityPointsDownTheLastAxis) {
+  json document = minimal_scene();
+  document["dimension"] = 3;
+  document["domain"] = json::parse(R"({"min": [0, 0, 0], "max": [1, 1, 1]})");
+  document["fluid"][0]["box"] = json::parse(R"({"min": [0, 0, 0], "max": [0.5, 0.5, 0.5]})");
+  EXPECT_EQ(parse(document).gravity, vec(0, 0, -9.81));
+}
+
+TEST(SceneReader, DomainIsDerivedFromTheContainer) {
+  json document = without(minimal_scene(), "/domain");
+  document["walls"] = json::parse(R"({"container": {"min": [0, 0], "max": [2, 1]}})");
+  const scene::Scene open = parse(document);
+  // Three layers of 0.01 on every side, and the container's height of 1 again above its open top.
+  EXPECT_NEAR(open.domain.box.min[0], -0.03, 1e-12);
+  EXPECT_NEAR(open.domain.box.min[1], -0.03, 1e-12);
+  EXPECT_NEAR(open.domain.box.max[0], 2.03, 1e-12);
+  EXPECT_NEAR(open.domain.box.max[1], 2.03, 1e-12);
+  EXPECT_EQ(open.domain.periodic, (std::array<bool, 3>{}));
+
+  document["walls"]["container"]["open_top"] = false;
+  EXPECT_NEAR(parse(document).domain.box.max[1], 1.03, 1e-12);
+}
+
+TEST(SceneReader, DefaultWallLayersCoverTheKernelSupport) {
+  // The quintic spline reaches 3 h = 3.9 spacings at h = 1.3 spacings: 4 layers.
+  json document = with(minimal_scene(), "/kernel", {{"type", "quintic_spline"}});
+  EXPECT_EQ(parse(document).walls.layers, 4);
+}
+
+TEST(SceneReader, AcceptsComments) {
+  const std::string text = R"({
+    // a comment line
+    "dimension": 2, /* and a block */
+    "particle_spacing": 0.01,
+    "domain": {"min": [0, 0], "max": [1, 1]},
+    "materials": [{"name": "water", "max_speed": 2}],
+    "fluid": [{"material": "water", "box": {"min": [0, 0], "max": [0.5, 0.5]}}],
+    "time": {"end": 1}
+  })";
+  EXPECT_EQ(parse_scene(text, file_name).particle_spacing, 0.01);
+}
+
+TEST(SceneReader, ReadsAFileAndNamesItInErrors) {
+  const std::filesystem::path directory = std::filesystem::temp_directory_path() / "tide_scene_reader_test";
+  std::filesystem::create_directories(directory);
+  const std::filesystem::path file = directory / "tank.json";
+  std::ofstream(file) << minimal_scene().dump(2);
+  EXPECT_EQ(read_scene_file(file).source, file.string());
+
+  std::ofstream(file) << with(minimal_scene(), "/particle_spacing", 0).dump(2);
+  try {
+    read_scene_file(file);
+    ADD_FAILURE() << "no SceneError";
+  } catch (const SceneError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind(file.string() + ": /particle_spacing: expected", 0), 0u) << error.what();
+  }
+
+  const std::filesystem::path absent = directory / "absent.json";
+  try {
+    read_scene_file(absent);
+    ADD_FAILURE() << "no SceneError";
+  } catch (const SceneError& error) {
+    EXPECT_EQ(std::string(error.what()), absent.string() + ": expected a scene file, got no such file");
+  }
+  std::filesystem::remove_all(directory);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input: each class of mistake is refused with the file, the key path and the expectation.
+
+TEST(SceneReaderRefuses, WrongTypeWithTheExactMessage) {
+  const SceneError error = error_of(with(full_2d_scene(), "/solver/cfl", "fast").dump());
+  EXPECT_STREQ(error.what(), R"(dam.json: /solver/cfl: expected a number in (0, 1], got "fast")");
+  EXPECT_EQ(error.file(), "dam.json");
+  EXPECT_EQ(error.key_path(), "/solver/cfl");
+  EXPECT_EQ(error.expected(), "a number in (0, 1]");
+  EXPECT_EQ(error.found(), R"("fast")");
+}
+
+TEST(SceneReaderRefuses, OtherWrongTypes) {
+  expect_refused(with(full_2d_scene(), "/walls/container/open_top", "yes"), "/walls/container/open_top",
+                 "true or false");
+  expect_refused(with(full_2d_scene(), "/materials/0/name", 7), "/materials/0/name", "a non-empty string");
+  expect_refused(with(full_2d_scene(), "/solver", json::array()), "/solver", "an object with the keys \"scheme\"");
+  expect_refused(with(full_2d_scene(), "/fluid", json::object()), "/fluid", "a non-empty array of fluid blocks");
+  expect_refused(with(full_2d_scene(), "/domain/periodic/1", 1), "/domain/periodic/1", "true or false");
+}
+
+TEST(SceneReaderRefuses, TextThatIsNotJson) {
+  const SceneError error = error_of("{\n  \"dimension\": 2,\n  \"particle_spacing\": ,\n}");
+  EXPECT_EQ(error.line(), 3u);
+  EXPECT_EQ(error.column(), 23u);
+  EXPECT_EQ(error.key_path(), "");
+  const std::string message = error.what();
+  EXPECT_EQ(message.rfind("dam.json: line 3, column 23: expected valid JSON, got syntax error", 0), 0u) << message;
+}
+
+TEST(SceneReaderRefuses, ADocumentThatIsNotAnObject) {
+  const SceneError error = error_of("[1, 2]");
+  EXPECT_EQ(std::string(error.what()).rfind("dam.json: expected an object with the keys \"dimension\"", 0), 0u)
+      << error.what();
+}
+
+TEST(SceneReaderRefuses, UnknownKeysListingTheAllowedOnes) {
+  expect_refused(with(full_2d_scene(), "/solver/cfll", 0.2), "/solver/cfll",
+                 R"(one of the keys "scheme", "equation_of_state", "tait_exponent")");
+  expect_refused(with(full_2d_scene(), "/fluid/1/ball/center", json::array({1, 1})), "/fluid/1/ball/center",
+                 R"(one of the keys "centre", "radius")");
+  expect_refused(with(full_2d_scene(), "/gravitation", 1), "/gravitation", R"("particle_spacing")");
+  const SceneError error = error_of(with(full_2d_scene(), "/time/a~0b", 1).dump());
+  EXPECT_EQ(error.key_path(), "/time/a~0b");
+  EXPECT_EQ(error.found(), R"(the unknown key "a~b")");
+}
+
+TEST(SceneReaderRefuses, KeysGivenTwice) {
+  const std::string text = R"({"dimension": 2, "fluid": [{"box": {"min": [0, 0], "min": [1, 1]}}]})";
+  const SceneError error = error_of(text);
+  EXPECT_EQ(error.key_path(), "/fluid/0/box/min");
+  EXPECT_STREQ(error.what(),
+               R"(dam.json: /fluid/0/box/min: expected each key at most once in an object, got "min" a second time)");
+}
+
+TEST(SceneReaderRefuses, MissingRequiredKeys) {
+  for (const char* key : {"/dimension", "/particle_spacing", "/materials", "/fluid", "/time"}) {
+    const SceneError error = error_of(without(full_2d_scene(), key).dump());
+    EXPECT_EQ(error.key_path(), key);
+    EXPECT_EQ(error.found(), "nothing (the key is missing)");
+  }
+  expect_refused(without(full_2d_scene(), "/time/end"), "/time/end", "a number > the start time (0.5)");
+  expect_refused(without(full_2d_scene(), "/fluid/0/box/max"), "/fluid/0/box/max", "an array of 2 numbers");
+  expect_refused(without(full_2d_scene(), "/materials/1/name"), "/materials/1/name", "a non-empty string");
+}
+
+TEST(SceneReaderRefuses, NonPositiveSpacing) {
+  expect_refused(with(full_2d_scene(), "/particle_spacing", 0), "/particle_spacing", "a number > 0");
+  expect_refused(with(full_2d_scene(), "/particle_spacing", -0.01), "/particle_spacing", "a number > 0");
+}
+
+TEST(SceneReaderRefuses, OtherNumbersOutOfRange) {
+  expect_refused(with(full_2d_scene(), "/kernel/smoothing_ratio", 0), "/kernel/smoothing_ratio", "a number > 0");
+  expect_refused(with(full_2d_scene(), "/materials/0/rest_density", -1), "/materials/0/rest_density", "a number > 0");
+  expect_refused(with(full_2d_scene(), "/materials/0/kinematic_viscosity", -1e-6), "/materials/0/kinematic_viscosity",
+                 "a number >= 0");
+  expect_refused(with(full_2d_scene(), "/solver/max_density_ratio", 1), "/solver/max_density_ratio", "a number > 1");
+  expect_refused(with(full_2d_scene(), "/fluid/1/ball/radius", 0), "/fluid/1/ball/radius", "a number > 0");
+}
+
+TEST(SceneReaderRefuses, VectorsOfTheWrongLength) {
+  expect_refused(with(full_2d_scene(), "/gravity", json::array({0, 0, -9.81})), "/gravity",
+                 "an array of 2 numbers [x, y]");
+  expect_refused(with(full_2d_scene(), "/fluid/0/box/max", json::array({0.4})), "/fluid/0/box/max",
+                 "an array of 2 numbers [x, y]");
+  expect_refused(with(full_2d_scene(), "/fluid/0/box/max/0", "0.4"), "/fluid/0/box/max/0", "a number");
+  expect_refused(with(full_2d_scene(), "/domain/periodic", json::array({true})), "/domain/periodic",
+                 "an array of 2 booleans");
+}
+
+TEST(SceneReaderRefuses, DimensionOtherThanTwoOrThree) {
+  expect_refused(with(full_2d_scene(), "/dimension", 4), "/dimension", "2 or 3");
+  expect_refused(with(full_2d_scene(), "/dimension", 2.5), "/dimension", "2 or 3");
+  expect_refused(with(full_2d_scene(), "/dimension", "2"), "/dimension", "2 or 3");
+}
+
+TEST(SceneReaderRefuses, UnknownNamesListingTheValidOnes) {
+  expect_refused(
+      with(full_2d_scene(), "/kernel/type", "gaussian"), "/kernel/type",
+      R"(one of "cubic_spline", "wendland_c2", "wendland_c4", "quintic_spline", "poly6", "spiky", "viscosity")");
+  expect_refused(with(full_2d_scene(), "/solver/scheme", "sph"), "/solver/scheme", R"(one of "wcsph")");
+  expect_refused(with(full_2d_scene(), "/solver/equation_of_state", "cole"), "/solver/equation_of_state",
+                 R"(one of "tait", "linear")");
+  expect_refused(with(full_2d_scene(), "/solver/density", "sum"), "/solver/density",
+                 R"(one of "summation", "continuity")");
+  expect_refused(with(full_2d_scene(), "/solver/viscosity", "none"), "/solver/viscosity",
+                 R"(one of "artificial", "laminar")");
+  expect_refused(with(full_2d_scene(), "/walls/slip", "slip"), "/walls/slip", R"(one of "no_slip", "free_slip")");
+}
+
+TEST(SceneReaderRefuses, FluidOutsideTheDomain) {
+  json document = without(full_2d_scene(), "/walls");
+  expect_refused(with(document, "/fluid/0/box/max/1", 2.5), "/fluid/0/box/max/1",
+                 "a number <= 2 (the max[1] of the domain)");
+  expect_refused(with(document, "/fluid/0/box/min/0", -0.2), "/fluid/0/box/min/0",
+                 "a number >= -0.1 (the min[0] of the domain)");
+  expect_refused(with(document, "/fluid/1/ball/centre/0", 1.65), "/fluid/1/ball",
+                 "a ball inside the domain [-0.1, 1.7] x [-0.1, 2]");
+}
+
+TEST(SceneReaderRefuses, ABoxWithNoInside) {
+  expect_refused(with(full_2d_scene(), "/fluid/0/box/max/1", 0), "/fluid/0/box/max/1", "a number > min[1] (0)");
+}
+
+TEST(SceneReaderRefuses, AContainerWithNoRoomForFluid) {
+  // An empty inner box.
+  expect_refused(with(full_2d_scene(), "/walls/container/max/0", 0), "/walls/container/max/0", "a number > min[0] (0)");
+  // Fluid outside the container's inner box.
+  expect_refused(with(full_2d_scene(), "/fluid/0/box/max/1", 1.3), "/fluid/0/box/max/1",
+                 "a number <= 1.2 (the max[1] of the container's inner box)");
+  expect_refused(with(full_2d_scene(), "/fluid/1/ball/centre/1", 0.05), "/fluid/1/ball",
+                 "a ball inside the container's inner box [0, 1.6] x [0, 1.2]");
+  // Fewer wall layers than the kernel support in spacings: the cubic spline reaches 2 h = 2.4
+  // spacings here.
+  expect_refused(with(full_2d_scene(), "/walls/layers", 2), "/walls/layers",
+                 "an integer >= 3 (ceil(kernel support / spacing), the support being 2.4 spacings)");
+  expect_refused(with(full_2d_scene(), "/walls/layers", 3.5), "/walls/layers", "an integer >= 3");
+}
+
+TEST(SceneReaderRefuses, WallsOutsideTheDomain) {
+  // The domain's min[0] is -0.1; 4 layers of 0.005 reach 0.02 below the container's min.
+  expect_refused(with(full_2d_scene(), "/domain/min/0", 0), "/walls/container/min/0",
+                 "a number >= 0.02 (the domain's min[0] plus 4 wall layers of 0.005)");
+  expect_refused(with(full_2d_scene(), "/domain/max/0", 1.61), "/walls/container/max/0",
+                 "a number <= 1.59 (the domain's max[0] minus 4 wall layers of 0.005)");
+}
+
+TEST(SceneReaderRefuses, EndTimeNotAfterStartTime) {
+  expect_refused(with(full_2d_scene(), "/time/end", 0.5), "/time/end", "a number > the start time (0.5)");
+  expect_refused(with(full_2d_scene(), "/time/end", 0.1), "/time/end", "a number > the start time (0.5)");
+}
+
+TEST(SceneReaderRefuses, NonPositiveOutputInterval) {
+  expect_refused(with(full_2d_scene(), "/time/output_interval", 0), "/time/output_interval", "a number > 0");
+}
+
+TEST(SceneReaderRefuses, AMaterialThatDoesNotExist) {
+  expect_refused(with(full_2d_scene(), "/fluid/1/material", "air"), "/fluid/1/material",
+                 R"(the name of a material: "water", "oil")");
+  expect_refused(with(full_2d_scene(), "/materials/1/name", "water"), "/materials/1/name",
+                 "a name no earlier material has");
+}
+
+TEST(SceneReaderRefuses, AFluidBlockWithNoLatticePoint) {
+  // Particles sit at (k + 1/2) x 0.005 from the container's corner: 0.0025, 0.0075, ...
+  expect_refused(with(with(full_2d_scene(), "/fluid/0/box/min/0", 0.003), "/fluid/0/box/max/0", 0.007), "/fluid/0/box",
+                 "a shape holding at least one particle position");
+  expect_refused(with(full_2d_scene(), "/fluid/1/ball", {{"centre", {0.005, 0.5}}, {"radius", 0.002}}), "/fluid/1/ball",
+                 "a shape holding at least one particle position");
+  // A ball as small, but centred on a lattice point, holds one.
+  EXPECT_NO_THROW(parse(with(full_2d_scene(), "/fluid/1/ball", {{"centre", {0.0025, 0.5025}}, {"radius", 0.002}})));
+}
+
+TEST(SceneReaderRefuses, BothOrNeitherSpeedOfAMaterial) {
+  const SceneError both = error_of(with(full_2d_scene(), "/materials/1/max_speed", 3).dump());
+  EXPECT_STREQ(both.what(),
+               R"(dam.json: /materials/1: expected exactly one of "sound_speed" and "max_speed", got both)");
+  expect_refused(without(full_2d_scene(), "/materials/0/max_speed"), "/materials/0",
+                 R"(exactly one of "sound_speed" and "max_speed")");
+}
+
+TEST(SceneReaderRefuses, UnknownOrRepeatedOutputFields) {
+  expect_refused(with(full_2d_scene(), "/output/fields/2", "vorticity"), "/output/fields/2",
+                 R"(one of "position", "velocity", "density", "pressure", "acceleration", "mass", "id")");
+  expect_refused(with(full_2d_scene(), "/output/fields/2", "velocity"), "/output/fields/2",
+                 "a field not listed before");
+  expect_refused(with(full_2d_scene(), "/output/fields", json::array()), "/output/fields",
+                 "a non-empty array of field names");
+}
+
+TEST(SceneReaderRefuses, NeitherDomainNorContainer) {
+  expect_refused(without(without(full_2d_scene(), "/domain"), "/walls/container"), "/domain",
+                 "only a scene with a wall container");
+}
+
+TEST(SceneReaderRefuses, ShapesThatAreNotExactlyOne) {
+  expect_refused(with(full_2d_scene(), "/fluid/0/ball", {{"centre", {1, 1}}, {"radius", 0.1}}), "/fluid/0",
+                 R"(exactly one shape key of "box", "ball")");
+  expect_refused(without(full_2d_scene(), "/walls/obstacles/2/plane"), "/walls/obstacles/2",
+                 R"(exactly one shape key of "box", "ball", "plane")");
+  expect_refused(with(full_2d_scene(), "/walls/obstacles/2/plane/normal", {0, 0}), "/walls/obstacles/2/plane/normal",
+                 "a non-zero vector");
+}
+
+}  // namespace
+}  // namespace tide::io

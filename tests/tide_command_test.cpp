@@ -1,0 +1,176 @@
+// The `tide` binary as a user meets it: bad scenes are refused before any work with the file,
+// the JSON path, the expectation and exit code 2; an unstable run exits with 3 and leaves its
+// last good frame; a good run writes frames that the XDMF names.
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tide/io/frame_writer.hpp"
+
+namespace tide {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // standard output and standard error together
+};
+
+CommandResult run_tide(const std::string& arguments) {
+  const std::string command = std::string(TIDE_COMMAND) + " " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) result.output += buffer;
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+class TideCommand : public testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("tide_command_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  // A small valid 2D dam break; `replace` swaps one exact piece of text for a broken one.
+  fs::path write_scene(const std::string& replace_from = "", const std::string& replace_to = "") {
+    std::string text = R"({
+  "dimension": 2,
+  "particle_spacing": 0.01,
+  "kernel": {"type": "wendland_c2", "smoothing_ratio": 1.3},
+  "materials": [{"name": "water", "rest_density": 1000, "max_speed": 2.0}],
+  "fluid": [{"material": "water", "box": {"min": [0, 0], "max": [0.1, 0.2]}}],
+  "walls": {"layers": 3, "container": {"min": [0, 0], "max": [0.4, 0.3], "open_top": true}},
+  "time": {"start": 0, "end": 0.05, "output_interval": 0.01}
+})";
+    if (!replace_from.empty()) {
+      const auto at = text.find(replace_from);
+      EXPECT_NE(at, std::string::npos) << replace_from;
+      text.replace(at, replace_from.size(), replace_to);
+    }
+    const fs::path file = directory_ / "scene.json";
+    std::ofstream(file) << text;
+    return file;
+  }
+
+  void expect_refused(const std::string& from, const std::string& to, const std::string& key_path,
+                      const std::string& expectation) {
+    const fs::path scene = write_scene(from, to);
+    for (const std::string& command : {std::string("check "), "run --quiet --out " + (directory_ / "out").string() + " "}) {
+      const CommandResult result = run_tide(command + scene.string());
+      EXPECT_EQ(result.exit_code, 2) << command << result.output;
+      EXPECT_NE(result.output.find(scene.string()), std::string::npos) << result.output;
+      EXPECT_NE(result.output.find(key_path), std::string::npos) << result.output;
+      EXPECT_NE(result.output.find(expectation), std::string::npos) << result.output;
+    }
+    EXPECT_FALSE(fs::exists(directory_ / "out" / "frames.xdmf")) << "a refused scene must not start a run";
+  }
+
+  fs::path directory_;
+};
+
+TEST_F(TideCommand, UnknownKeyIsRefused) {
+  expect_refused(R"("dimension": 2,)", R"("dimension": 2, "gravty": [0, -9.81],)", "/gravty", "expected one of");
+}
+
+TEST_F(TideCommand, WrongTypeIsRefused) {
+  expect_refused(R"("particle_spacing": 0.01)", R"("particle_spacing": "small")", "/particle_spacing", "number");
+}
+
+TEST_F(TideCommand, NonPositiveSpacingIsRefused) {
+  expect_refused(R"("particle_spacing": 0.01)", R"("particle_spacing": -0.01)", "/particle_spacing", "expected a number > 0");
+}
+
+TEST_F(TideCommand, FluidOutsideTheDomainIsRefused) {
+  expect_refused(R"("max": [0.1, 0.2]}}])", R"("max": [0.1, 0.5]}}])", "/fluid/0/box/max/1", "expected a number <= 0.3");
+}
+
+TEST_F(TideCommand, WallsLeavingNoFluidAreRefused) {
+  expect_refused(R"("container": {"min": [0, 0], "max": [0.4, 0.3])",
+                 R"("container": {"min": [0.2, 0], "max": [0.4, 0.3])", "/fluid/0", "container");
+}
+
+TEST_F(TideCommand, EndTimeBeforeStartIsRefused) {
+  expect_refused(R"("start": 0, "end": 0.05)", R"("start": 0.1, "end": 0.05)", "/time/end", "> the start time");
+}
+
+TEST_F(TideCommand, MissingFileIsRefused) {
+  const CommandResult result = run_tide("check " + (directory_ / "nowhere.json").string());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("nowhere.json"), std::string::npos) << result.output;
+}
+
+TEST_F(TideCommand, CheckAcceptsAGoodScene) {
+  const CommandResult result = run_tide("check " + write_scene().string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("200 fluid"), std::string::npos) << result.output;
+}
+
+// A run writes one frame per output interval plus the initial one, names them all in the
+// XDMF, and prints the summary with the binding time-step limits.
+TEST_F(TideCommand, RunWritesFramesAndSummary) {
+  const fs::path out = directory_ / "out";
+  const CommandResult result = run_tide("run --out " + out.string() + " " + write_scene().string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("run summary"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("binding limit per step: acoustic"), std::string::npos) << result.output;
+  EXPECT_TRUE(fs::exists(out / "frames.xdmf"));
+  for (int frame = 0; frame <= 5; ++frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frames_%06d.h5", frame);
+    ASSERT_TRUE(fs::exists(out / name)) << name;
+  }
+  const io::Frame last = io::read_frame(out / "frames_000005.h5");
+  EXPECT_NEAR(last.time, 0.05, 0.01);
+  EXPECT_EQ(last.datasets.at("position").shape[0], 200u);
+  EXPECT_EQ(last.attributes.count("time_step_limit"), 1u);
+}
+
+TEST_F(TideCommand, UntilOverridesTheEndTime) {
+  const fs::path out = directory_ / "out";
+  const CommandResult result =
+      run_tide("run --quiet --until 0.02 --out " + out.string() + " " + write_scene().string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(fs::exists(out / "frames_000002.h5"));
+  EXPECT_FALSE(fs::exists(out / "frames_000003.h5"));
+}
+
+// c0 = 0.2 m/s for a fluid that falls at ~0.5 m/s: the run leaves the weakly compressible
+// regime, stops with exit code 3 and a diagnosis, and the frames written before stay readable.
+TEST_F(TideCommand, UnstableRunExitsWithThreeAndKeepsTheLastGoodFrame) {
+  const fs::path out = directory_ / "out";
+  const fs::path scene = write_scene(R"("max_speed": 2.0)", R"("sound_speed": 0.2)");
+  const CommandResult result = run_tide("run --quiet --out " + out.string() + " " + scene.string());
+  ASSERT_EQ(result.exit_code, 3) << result.output;
+  EXPECT_NE(result.output.find("unstable run: particle"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("at step"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("last good frame"), std::string::npos) << result.output;
+  const io::Frame first = io::read_frame(out / "frames_000000.h5");
+  EXPECT_EQ(first.step, 0u);
+  for (const auto& entry : fs::directory_iterator(out)) {
+    EXPECT_EQ(entry.path().extension(), entry.path().extension() == ".xdmf" ? ".xdmf" : ".h5") << entry.path();
+  }
+}
+
+TEST_F(TideCommand, InfoNamesVersionAndPrecision) {
+  const CommandResult result = run_tide("info");
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_NE(result.output.find("precision"), std::string::npos);
+  EXPECT_NE(result.output.find("threads"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tide
