@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -96,6 +97,11 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   std::printf("  wall time   %.2f s, %.3g M particle-steps/s (fluid particles x steps / wall time)\n", wall,
               rate / 1e6);
   std::printf("  time step   binding limit per step: %s\n", limit_counts(run_tally).c_str());
+  const PassTimes& times = simulation->pass_times();
+  const double total = std::max(times.total(), 1e-12);
+  std::printf("  passes      neighbour search %.0f%%, density %.0f%%, walls %.0f%%, momentum %.0f%%, integration %.0f%%\n",
+              100 * times.neighbor_search / total, 100 * times.density / total, 100 * times.wall_state / total,
+              100 * times.momentum / total, 100 * times.integration / total);
   std::printf("  output      %zu frames, %s\n", writer.frames_written(), writer.xdmf_path().string().c_str());
   return exit_ok;
 }

@@ -10,14 +10,14 @@
 // (UseRealTime): the work runs on TBB worker threads, whose CPU time the main thread's clock
 // would not see.
 //
-// The particle cloud (see make_cloud): a block of fluid in a tank, as in a dam break. A lattice
+// The particle cloud (see cloud()): a block of fluid in a tank, as in a dam break. A lattice
 // of spacing dx, ⌈N^(1/D)⌉ particles wide on every axis but the last, filled in lattice
 // order up to exactly N particles (so the top layer may be partial, like a free surface), every
 // particle displaced by a uniform jitter of ±0.1 dx. The domain box leaves 4 dx around the block
 // on every side and is twice the fluid height on the last axis (the fluid fills about half the
 // tank); no axis is periodic. Support radius 2 dx = the cubic spline with h = dx, as usual in SPH,
-// so a particle has about 4π/3·2³ ≈ 33.5 neighbours in 3D and π·2² ≈ 12.6 in 2D (itself included,
-// fewer at the free surfaces).
+// so a particle has about 30 neighbours in 3D and 11 in 2D (lattice points closer than 2 dx,
+// itself included; fewer at the free surfaces).
 //
 // Particle order: the lattice is shuffled once (fixed seed) before the first update, so the
 // first sort starts from a random order, as after reading an unordered initial condition. That
@@ -25,7 +25,7 @@
 // iteration moves each particle by a small random displacement (uniform in ±0.01 dx per axis,
 // from a hash of its id and the step, so it does not depend on the order or the thread count),
 // then calls grid.update(). The input of each sort is therefore the previous step's order with
-// ~1% of the particles in another cell, as in a time step. Displacements alternate in sign
+// under 1% of the particles in another cell, as in a time step. Displacements alternate in sign
 // (step 2k moves by +δ_k, step 2k+1 by −δ_k), so the cloud does not diffuse out of its block over
 // the thousands of iterations a small case runs.
 //
@@ -37,7 +37,7 @@
 //
 // Counters (all per iteration of the timed loop):
 //   particles/s      N / time per update or sweep            (kIsIterationInvariantRate)
-//   pair_time        (sweep only) seconds per particle–neighbour pair, printed with an SI prefix ("1.9ns");
+//   pair_time        (sweep only) seconds per particle–neighbour pair, printed with an SI prefix ("16.6ns");
 //                    pairs = Σ_i |{j : |x_i − x_j| < 2 dx}|, i itself included, counted once
 //                    before timing; it is time per iteration / pairs   (Rate | kInvert)
 //   neighbors        pairs / N, average neighbours per particle (itself included)
@@ -170,11 +170,12 @@ std::size_t count_pairs(const tide::NeighborGrid<D>& grid, const tide::ParticleS
 }
 
 template <int D>
-void set_common_counters(benchmark::State& state, std::size_t n, std::size_t pairs,
-                         const tide::NeighborGrid<D>& grid, const tide::ParticleSet<D>& particles, bool per_pair) {
+void set_common_counters(benchmark::State& state, std::size_t n, std::size_t pairs, const tide::NeighborGrid<D>& grid,
+                         const tide::ParticleSet<D>& particles, bool per_pair) {
   using benchmark::Counter;
   state.counters["particles/s"] = Counter(double(n), Counter::kIsIterationInvariantRate);
-  if (per_pair) state.counters["pair_time"] = Counter(double(pairs), Counter::kIsIterationInvariantRate | Counter::kInvert);
+  if (per_pair)
+    state.counters["pair_time"] = Counter(double(pairs), Counter::kIsIterationInvariantRate | Counter::kInvert);
   state.counters["neighbors"] = Counter(double(pairs) / double(n));
   state.counters["grid_B/particle"] = Counter(double(grid.bytes_per_particle()));
   state.counters["set_B/particle"] = Counter(double(particles.bytes_per_particle()));
@@ -250,9 +251,8 @@ void kernel_sum_sweep(benchmark::State& state, std::size_t n, int threads) {
   auto sweep = [&] {
     tide::for_each_particle(particles.size(), [&](std::size_t i) {
       Real sum = 0;
-      grid.for_each_neighbor(i, x, [&](tide::Index, const tide::Vector<D>&, Real r2) {
-        sum += kernel.value(std::sqrt(r2));
-      });
+      grid.for_each_neighbor(i, x,
+                             [&](tide::Index, const tide::Vector<D>&, Real r2) { sum += kernel.value(std::sqrt(r2)); });
       density[i] = mass * sum;
     });
   };
@@ -291,9 +291,8 @@ void register_dimension() {
           const std::string name = "BM_NeighborBuild/" + dim + "/" + size_name(n) + "/" +
                                    std::string(tide::sort_algorithm_name(sort)) + "/" +
                                    std::string(tide::cell_lookup_name(lookup)) + suffix(threads);
-          auto* b = benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
-            neighbor_build<D>(state, n, sort, lookup, threads);
-          });
+          auto* b = benchmark::RegisterBenchmark(
+              name.c_str(), [=](benchmark::State& state) { neighbor_build<D>(state, n, sort, lookup, threads); });
           b->UseRealTime()->Unit(benchmark::kMillisecond);
           if (n >= 1'000'000) b->Iterations(10);
         }
@@ -314,8 +313,8 @@ void register_dimension() {
   for (std::size_t n : {std::size_t(10'000), std::size_t(100'000), std::size_t(1'000'000)}) {
     for (int threads : {1, 2}) {
       const std::string name = "BM_KernelSumSweep/" + dim + "/" + size_name(n) + suffix(threads);
-      auto* b = benchmark::RegisterBenchmark(
-          name.c_str(), [=](benchmark::State& state) { kernel_sum_sweep<D>(state, n, threads); });
+      auto* b = benchmark::RegisterBenchmark(name.c_str(),
+                                             [=](benchmark::State& state) { kernel_sum_sweep<D>(state, n, threads); });
       b->UseRealTime()->Unit(benchmark::kMillisecond);
       if (n >= 1'000'000) b->Iterations(5);
     }

@@ -653,7 +653,8 @@ class SceneParser {
 
   void read_solver(const Node& node, scene::Solver& solver) const {
     expect_object(node, {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha",
-                         "beta", "cfl", "viscous_number", "force_number", "max_density_ratio"});
+                         "beta", "cfl", "viscous_number", "force_number", "max_density_ratio",
+                         "clamp_negative_pressure"});
     read_optional(node, "scheme", solver.scheme, scheme_names);
     read_optional(node, "equation_of_state", solver.equation_of_state, equation_of_state_names);
     read_optional(node, "tait_exponent", solver.tait_exponent, positive);
@@ -666,6 +667,9 @@ class SceneParser {
     read_optional(node, "viscous_number", solver.viscous_number, positive);
     read_optional(node, "force_number", solver.force_number, positive);
     read_optional(node, "max_density_ratio", solver.max_density_ratio, above_one);
+    if (const Node clamp = child(node, "clamp_negative_pressure"); clamp.present()) {
+      solver.clamp_negative_pressure = boolean(clamp);
+    }
   }
 
   scene::Time read_time(const Node& node) const {

@@ -21,11 +21,28 @@ constexpr Real cell_margin = Real(1e-5);
 // Items per block when the cell table is built; fixed so the table never depends on threads.
 constexpr std::size_t scan_block = std::size_t(1) << 14;
 
+// Cells per block when neighbour ranges are gathered.
+constexpr std::size_t cell_block = 1024;
+
+// The automatic lookup uses the dense table while it costs at most this many cells (4 bytes
+// each) per particle; beyond, the domain is mostly empty and the hash table is smaller.
+constexpr std::size_t dense_cells_per_particle = 4;
+
 std::uint64_t mix(std::uint64_t code) { return code * 0x9e3779b97f4a7c15ULL; }
 
 }  // namespace
 
-std::string_view cell_lookup_name(CellLookup lookup) { return lookup == CellLookup::hash ? "hash" : "dense"; }
+std::string_view cell_lookup_name(CellLookup lookup) {
+  switch (lookup) {
+    case CellLookup::automatic:
+      return "automatic";
+    case CellLookup::hash:
+      return "hash";
+    case CellLookup::dense:
+      return "dense";
+  }
+  return "unknown";
+}
 
 template <int D>
 NeighborGrid<D>::NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort,
@@ -95,7 +112,7 @@ std::uint64_t NeighborGrid<D>::code_of(const std::array<std::int64_t, D>& cell) 
 
 template <int D>
 std::uint32_t NeighborGrid<D>::find_cell(const std::array<std::int64_t, D>& cell) const {
-  if (lookup_ == CellLookup::dense) {
+  if (active_lookup_ == CellLookup::dense) {
     std::size_t linear = 0;
     for (int d = D - 1; d >= 0; --d) linear = linear * cell_counts_[d] + static_cast<std::size_t>(cell[d]);
     return dense_slots_[linear];
@@ -156,7 +173,8 @@ template <int D>
 std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
   const std::size_t n = particles.size();
   auto x = particles[particles.position()];
-  codes_.resize(n);
+  auto& codes = sort_workspace_.keys;
+  codes.resize(n);
   for_each_particle(n, [&](std::size_t i) {
     Vector<D> xi = x[i];
     for (int d = 0; d < D; ++d) {
@@ -167,9 +185,9 @@ std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
     }
     x.set(i, xi);
     std::array<std::int64_t, D> cell;
-    codes_[i] = cell_of(xi, cell) ? code_of(cell) : invalid_code_;
+    codes[i] = cell_of(xi, cell) ? code_of(cell) : invalid_code_;
   });
-  sort_pairs(codes_, sort_, sort_workspace_);
+  sort_pairs(sort_, sort_workspace_);
   const auto& sorted = sort_workspace_.keys;
   const std::size_t kept =
       static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), invalid_code_) - sorted.begin());
@@ -225,9 +243,14 @@ void NeighborGrid<D>::build_cells(std::size_t n) {
 template <int D>
 void NeighborGrid<D>::build_lookup() {
   const std::size_t cells = cell_codes_.size();
-  if (lookup_ == CellLookup::dense) {
-    std::size_t total = 1;
-    for (int d = 0; d < D; ++d) total *= cell_counts_[d];
+  std::size_t total = 1;
+  for (int d = 0; d < D; ++d) total *= cell_counts_[d];
+  active_lookup_ = lookup_;
+  if (lookup_ == CellLookup::automatic)
+    active_lookup_ = total <= dense_cells_per_particle * particle_cell_.size() ? CellLookup::dense : CellLookup::hash;
+  if (active_lookup_ == CellLookup::dense) {
+    hash_codes_ = {};
+    hash_slots_ = {};
     dense_slots_.assign(total, no_cell);
     for_each_particle(cells, [&](std::size_t c) {
       std::size_t linear = 0;
@@ -237,6 +260,7 @@ void NeighborGrid<D>::build_lookup() {
     });
     return;
   }
+  dense_slots_ = {};
   const std::size_t capacity = std::bit_ceil(std::max<std::size_t>(2 * cells, 16));
   hash_codes_.assign(capacity, invalid_code_);
   hash_slots_.resize(capacity);
@@ -255,7 +279,7 @@ template <int D>
 std::size_t NeighborGrid<D>::bytes_per_particle() const {
   const std::size_t n = std::max<std::size_t>(particle_count(), 1);
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  const std::size_t total = bytes(codes_) + bytes(sort_workspace_.keys) + bytes(sort_workspace_.order) +
+  const std::size_t total = bytes(sort_workspace_.keys) + bytes(sort_workspace_.order) +
                             bytes(sort_workspace_.key_scratch) + bytes(sort_workspace_.order_scratch) +
                             bytes(sort_workspace_.histogram) + bytes(cell_codes_) + bytes(cell_start_) +
                             bytes(particle_cell_) + bytes(hash_codes_) + bytes(hash_slots_) +
@@ -272,20 +296,28 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
   }
   shifts_ = sources.shifts_;
   support_squared_ = sources.support_squared_;
+  // One stencil per query cell, gathered per fixed block of cells and then placed by a prefix
+  // sum, so the layout is independent of the thread count.
   const std::size_t cells = queries.cell_codes_.size();
   range_offset_.resize(cells + 1);
   range_offset_[0] = 0;
-  using Stencil = std::array<CellRange, NeighborGrid<D>::stencil_size>;
-  for_each_particle(cells, [&](std::size_t c) {
-    Stencil stencil;
-    range_offset_[c + 1] = static_cast<std::uint32_t>(sources.stencil_ranges(queries.cell_coordinates(c), stencil));
+  const std::size_t blocks = (cells + cell_block - 1) / cell_block;
+  std::vector<std::vector<CellRange>> block_ranges(blocks);
+  parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
+    std::array<CellRange, NeighborGrid<D>::stencil_size> stencil;
+    for (std::size_t b = first; b < last; ++b) {
+      for (std::size_t c = b * cell_block; c < std::min(cells, (b + 1) * cell_block); ++c) {
+        const int count = sources.stencil_ranges(queries.cell_coordinates(c), stencil);
+        range_offset_[c + 1] = static_cast<std::uint32_t>(count);
+        block_ranges[b].insert(block_ranges[b].end(), stencil.begin(), stencil.begin() + count);
+      }
+    }
   });
   for (std::size_t c = 0; c < cells; ++c) range_offset_[c + 1] += range_offset_[c];
   ranges_.resize(range_offset_[cells]);
-  for_each_particle(cells, [&](std::size_t c) {
-    Stencil stencil;
-    const int count = sources.stencil_ranges(queries.cell_coordinates(c), stencil);
-    std::copy(stencil.begin(), stencil.begin() + count, ranges_.begin() + range_offset_[c]);
+  parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; ++b)
+      std::copy(block_ranges[b].begin(), block_ranges[b].end(), ranges_.begin() + range_offset_[b * cell_block]);
   });
 }
 

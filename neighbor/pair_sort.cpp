@@ -78,14 +78,10 @@ std::string_view sort_algorithm_name(SortAlgorithm algorithm) {
   return algorithm == SortAlgorithm::radix ? "radix" : "comparison";
 }
 
-void sort_pairs(std::span<const std::uint64_t> codes, SortAlgorithm algorithm, PairSortWorkspace& workspace) {
-  const std::size_t n = codes.size();
-  workspace.keys.resize(n);
+void sort_pairs(SortAlgorithm algorithm, PairSortWorkspace& workspace) {
+  const std::size_t n = workspace.keys.size();
   workspace.order.resize(n);
-  for_each_particle(n, [&](std::size_t i) {
-    workspace.keys[i] = codes[i];
-    workspace.order[i] = static_cast<Index>(i);
-  });
+  for_each_particle(n, [&](std::size_t i) { workspace.order[i] = static_cast<Index>(i); });
   if (algorithm == SortAlgorithm::radix) {
     radix_sort(workspace);
   } else {

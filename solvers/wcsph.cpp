@@ -1,5 +1,6 @@
 #include "tide/solvers/wcsph.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -53,6 +54,13 @@ ParticleSet<D> make_particles(const std::vector<Vector<D>>& points, Real mass) {
     set[m][i] = mass;
   }
   return set;
+}
+
+// Adds the seconds since `start` to `total` and restarts the clock.
+void lap(std::chrono::steady_clock::time_point& start, double& total) {
+  const auto now = std::chrono::steady_clock::now();
+  total += std::chrono::duration<double>(now - start).count();
+  start = now;
 }
 
 // Per-step maxima and the first particle (lowest index) whose state is out of bounds.
@@ -121,6 +129,7 @@ void Wcsph<D>::compute_interactions() {
                                       eos_.sound_speed(),
                                       kinematic_viscosity_,
                                       smoothing_length_};
+  auto clock = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& kernel) {
         if (summation) {
@@ -135,8 +144,10 @@ void Wcsph<D>::compute_interactions() {
             pressure[i] = clamp ? std::max(p, Real(0)) : p;
           });
         }
+        lap(clock, pass_times_.density);
         passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, eos_, gravity_,
                               scene_.solver.clamp_negative_pressure);
+        lap(clock, pass_times_.wall_state);
         if (scene_.solver.viscosity == scene::ViscosityModel::artificial) {
           passes::momentum<D, scene::ViscosityModel::artificial>(kernel, viscosity, fluid_, fluid_fields_, neighbors_,
                                                                  walls_, wall_fields_, gravity_);
@@ -144,6 +155,7 @@ void Wcsph<D>::compute_interactions() {
           passes::momentum<D, scene::ViscosityModel::laminar>(kernel, viscosity, fluid_, fluid_fields_, neighbors_,
                                                               walls_, wall_fields_, gravity_);
         }
+        lap(clock, pass_times_.momentum);
       },
       kernel_);
 }
@@ -163,6 +175,7 @@ StepReport Wcsph<D>::step() {
   StepReport report;
   report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
   const Real dt = report.time_step.dt;
+  auto clock = std::chrono::steady_clock::now();
   {
     // Kick (half step) and drift of velocity Verlet.
     auto x = fluid_[fluid_fields_.position];
@@ -174,14 +187,18 @@ StepReport Wcsph<D>::step() {
       x.set(i, x[i] + dt * half_step_velocity);
     });
   }
+  lap(clock, pass_times_.integration);
   report.removed = neighbors_.update_fluid(fluid_);
+  lap(clock, pass_times_.neighbor_search);
   if (scene_.solver.density == scene::DensityMethod::continuity) {
     compute_density_rate();
     auto density = fluid_[fluid_fields_.density];
     const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
     for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] += dt * rate[i]; });
+    lap(clock, pass_times_.density);
   }
   compute_interactions();
+  clock = std::chrono::steady_clock::now();
   {
     auto v = fluid_[fluid_fields_.velocity];
     const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
@@ -190,7 +207,16 @@ StepReport Wcsph<D>::step() {
   time_ += dt;
   ++step_count_;
   check_state();
+  lap(clock, pass_times_.integration);
   return report;
+}
+
+template <int D>
+double Wcsph<D>::bytes_per_particle() const {
+  const double fluid_count = static_cast<double>(std::max<std::size_t>(fluid_.size(), 1));
+  const double fields = static_cast<double>(fluid_.bytes_per_particle() * fluid_.size() +
+                                            walls_.bytes_per_particle() * walls_.size());
+  return (fields + static_cast<double>(neighbors_.bytes())) / fluid_count;
 }
 
 template <int D>

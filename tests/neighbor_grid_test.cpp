@@ -248,6 +248,7 @@ std::vector<GridCase> all_cases() {
       for (bool periodic : {false, true}) {
         cases.push_back({dimension, cloud, periodic, SortAlgorithm::radix, CellLookup::hash});
         cases.push_back({dimension, cloud, periodic, SortAlgorithm::comparison, CellLookup::dense});
+        cases.push_back({dimension, cloud, periodic, SortAlgorithm::radix, CellLookup::automatic});
       }
   return cases;
 }
@@ -331,8 +332,10 @@ TEST(PairSort, RadixAndComparisonGiveTheSameUniqueOrder) {
   std::vector<std::uint64_t> codes(200'000);
   for (auto& code : codes) code = random() % 5000 + (random() % 2 ? (std::uint64_t(1) << 40) : 0);
   PairSortWorkspace radix, comparison;
-  sort_pairs(codes, SortAlgorithm::radix, radix);
-  sort_pairs(codes, SortAlgorithm::comparison, comparison);
+  radix.keys = codes;
+  comparison.keys = codes;
+  sort_pairs(SortAlgorithm::radix, radix);
+  sort_pairs(SortAlgorithm::comparison, comparison);
   EXPECT_EQ(radix.order, comparison.order);
   EXPECT_EQ(radix.keys, comparison.keys);
   for (std::size_t k = 1; k < codes.size(); ++k) {

@@ -18,8 +18,9 @@ namespace tide {
 /// How the grid finds an occupied cell from its coordinates while it builds the per-cell
 /// neighbour ranges. bench/neighbor_bench measures both.
 enum class CellLookup {
-  hash,  ///< open-addressing table over occupied cells only: memory ∝ particles
-  dense  ///< one slot per cell of the whole domain: memory ∝ domain volume
+  automatic,  ///< dense while the domain has at most 4 cells per particle, else hash
+  hash,       ///< open-addressing table over occupied cells only: memory ∝ particles
+  dense       ///< one slot per cell of the whole domain: memory ∝ domain volume (faster)
 };
 
 std::string_view cell_lookup_name(CellLookup lookup);
@@ -91,7 +92,7 @@ template <int D>
 class NeighborGrid {
  public:
   NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort = SortAlgorithm::radix,
-               CellLookup lookup = CellLookup::hash);
+               CellLookup lookup = CellLookup::automatic);
 
   /// Wraps periodic positions, sorts the particles by cell code (one gather per field),
   /// removes particles outside the domain and rebuilds the cell table. Returns the number of
@@ -121,6 +122,8 @@ class NeighborGrid {
   std::size_t removed_total() const { return removed_total_; }
   SortAlgorithm sort_algorithm() const { return sort_; }
   CellLookup cell_lookup() const { return lookup_; }
+  /// The lookup the last update used (resolves `automatic`).
+  CellLookup active_cell_lookup() const { return active_lookup_; }
 
   /// Bytes the grid keeps (tables and sort workspace), per particle of the last update.
   std::size_t bytes_per_particle() const;
@@ -143,6 +146,7 @@ class NeighborGrid {
   Real support_squared_;
   SortAlgorithm sort_;
   CellLookup lookup_;
+  CellLookup active_lookup_ = CellLookup::hash;
   Vector<D> cell_size_;
   Vector<D> inverse_cell_size_;
   std::array<std::uint32_t, D> cell_counts_{};
@@ -150,7 +154,6 @@ class NeighborGrid {
   std::array<Vector<D>, stencil_size> shifts_;
   std::size_t removed_total_ = 0;
 
-  std::vector<std::uint64_t> codes_;
   PairSortWorkspace sort_workspace_;
   std::vector<std::uint64_t> cell_codes_;   // occupied cells in Morton order
   std::vector<Index> cell_start_;           // cell c holds sorted particles [start[c], start[c+1])

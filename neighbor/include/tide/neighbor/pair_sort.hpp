@@ -27,10 +27,10 @@ struct PairSortWorkspace {
   std::vector<std::size_t> histogram;
 };
 
-/// Sorts the particle indices 0..n-1 by `codes` (one per particle, n = codes.size()). On return
-/// `workspace.order` is the permutation (order[k] = index of the particle that goes to slot k)
-/// and `workspace.keys` the sorted codes. Equal codes keep increasing index order, so the result
-/// is unique.
-void sort_pairs(std::span<const std::uint64_t> codes, SortAlgorithm algorithm, PairSortWorkspace& workspace);
+/// Sorts the particle indices 0..n-1 by the codes the caller put in `workspace.keys` (one per
+/// particle, n = keys.size()), in place. On return `workspace.order` is the permutation
+/// (order[k] = index of the particle that goes to slot k) and `workspace.keys` the sorted codes.
+/// Equal codes keep increasing index order, so the result is unique.
+void sort_pairs(SortAlgorithm algorithm, PairSortWorkspace& workspace);
 
 }  // namespace tide

@@ -35,6 +35,16 @@ struct WallFields {
   ScalarField pressure;
 };
 
+/// Wall-clock seconds spent in each part of the step, summed since construction.
+struct PassTimes {
+  double neighbor_search = 0;  // sort, reorder, cell tables
+  double density = 0;          // summation (with EOS) or continuity update and EOS
+  double wall_state = 0;       // wall pressure, density and velocity extrapolation
+  double momentum = 0;         // pressure, viscous and body forces
+  double integration = 0;      // kicks, drift, stability check and reductions
+  double total() const { return neighbor_search + density + wall_state + momentum + integration; }
+};
+
 /// What one step did.
 struct StepReport {
   TimeStep time_step;
@@ -64,6 +74,9 @@ class Wcsph {
   Real smoothing_length() const { return smoothing_length_; }
   Real max_speed() const { return max_speed_; }
   std::size_t removed_total() const { return neighbors_.fluid_grid().removed_total(); }
+  const PassTimes& pass_times() const { return pass_times_; }
+  /// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
+  double bytes_per_particle() const;
 
  private:
   void compute_interactions();
@@ -86,6 +99,7 @@ class Wcsph {
   std::uint64_t step_count_ = 0;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
+  PassTimes pass_times_;
 };
 
 extern template class Wcsph<2>;
