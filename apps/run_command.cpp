@@ -63,7 +63,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   Progress progress(std::cout, terminal, options.quiet, scene.time.start, end_time, particles);
 
   TimeStepTally run_tally, frame_tally;
-  writer.write(simulation->fluid(), static_cast<double>(simulation->time()), 0);
+  writer.write(simulation->fluid(), simulation->time(), 0);
   double next_output = scene.time.start + interval;
   std::filesystem::path last_frame = output_directory;
   try {
@@ -71,7 +71,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
       const StepReport report = simulation->step();
       run_tally.add(report.time_step.limit);
       frame_tally.add(report.time_step.limit);
-      const double time = static_cast<double>(simulation->time());
+      const double time = simulation->time();
       // A frame is due once the time passes its output time (within round-off of the sum).
       if (time >= next_output - 1e-9 * interval || time >= end_time) {
         last_frame = writer.write(simulation->fluid(), time, simulation->step_count(), frame_attributes(frame_tally));
@@ -81,11 +81,11 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
       progress.update(time, simulation->step_count());
     }
   } catch (const InstabilityError& error) {
-    progress.finish(static_cast<double>(simulation->time()), simulation->step_count());
+    progress.finish(simulation->time(), simulation->step_count());
     std::cerr << "tide: " << error.what() << "\ntide: the last good frame is " << last_frame.string() << '\n';
     return exit_unstable;
   }
-  progress.finish(static_cast<double>(simulation->time()), simulation->step_count());
+  progress.finish(simulation->time(), simulation->step_count());
 
   const double wall = progress.wall_seconds();
   const double rate = static_cast<double>(particles) * static_cast<double>(simulation->step_count()) / wall;
@@ -93,7 +93,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   std::printf("  particles   %zu fluid, %zu wall, %zu removed (left the domain)\n", particles,
               simulation->walls().size(), simulation->removed_total());
   std::printf("  steps       %llu, simulated %.4g s\n", static_cast<unsigned long long>(simulation->step_count()),
-              static_cast<double>(simulation->time()) - scene.time.start);
+              simulation->time() - scene.time.start);
   std::printf("  wall time   %.2f s, %.3g M particle-steps/s (fluid particles x steps / wall time)\n", wall,
               rate / 1e6);
   std::printf("  time step   binding limit per step: %s\n", limit_counts(run_tally).c_str());

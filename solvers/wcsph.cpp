@@ -98,7 +98,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
                    ScalarField{}};
   if (scene.solver.density == scene::DensityMethod::continuity) {
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
-    for (Real& rho : fluid_[fluid_fields_.density]) rho = eos_.rest_density();
+    set_hydrostatic_density();
   }
   walls_ = make_particles<D>(sample_walls<D>(scene), particle_mass);
   wall_fields_ = {walls_.position(), walls_.add_vector("velocity"), walls_.scalar("mass"), walls_.add_scalar("density"),
@@ -111,12 +111,32 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   time_step_rule_.cfl = static_cast<Real>(scene.solver.cfl);
   time_step_rule_.viscous_number = static_cast<Real>(scene.solver.viscous_number);
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
-  time_ = static_cast<Real>(scene.time.start);
+  time_ = scene.time.start;
 
   neighbors_.set_walls(walls_);
   neighbors_.update_fluid(fluid_);
   compute_interactions();
   check_state();
+}
+
+template <int D>
+void Wcsph<D>::set_hydrostatic_density() {
+  // Continuity density starts from the fluid at rest under gravity: p = ρ0 |g| depth below the
+  // highest particle (plus half a spacing, its share of the column), ρ from the equation of state.
+  auto density = fluid_[fluid_fields_.density];
+  const auto x = std::as_const(fluid_)[fluid_fields_.position];
+  const Real g = gravity_.norm();
+  if (g == 0 || fluid_.empty()) {
+    for (Real& rho : density) rho = eos_.rest_density();
+    return;
+  }
+  const Vector<D> up = -gravity_ / g;
+  Real top = -std::numeric_limits<Real>::max();
+  for (std::size_t i = 0; i < fluid_.size(); ++i) top = std::max(top, up.dot(x[i]));
+  top += static_cast<Real>(scene_.particle_spacing) / 2;
+  for_each_particle(fluid_.size(), [&](std::size_t i) {
+    density[i] = eos_.density(eos_.rest_density() * g * (top - up.dot(x[i])));
+  });
 }
 
 template <int D>
@@ -164,7 +184,7 @@ template <int D>
 void Wcsph<D>::compute_density_rate() {
   std::visit(
       [&](const auto& kernel) {
-        passes::continuity<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
+        passes::continuity<D>(kernel, eos_, gravity_, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
                               static_cast<Real>(scene_.solver.delta_sph), eos_.sound_speed());
       },
       kernel_);
@@ -248,7 +268,7 @@ void Wcsph<D>::check_state() {
 
   const std::size_t i = summary.bad_particle;
   const Index id = fluid_[fluid_.id()][i];
-  const double t = static_cast<double>(time_);
+  const double t = time_;
   if (!std::isfinite(x[i].squaredNorm()))
     throw InstabilityError(id, "position", static_cast<double>(x[i].norm()), step_count_, t, "not finite");
   if (!std::isfinite(v[i].squaredNorm()))

@@ -5,16 +5,21 @@
 #include <cmath>
 
 #include "tide/core/parallel.hpp"
+#include "tide/solvers/equation_of_state.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
 #include "tide/solvers/wcsph.hpp"
 
 namespace tide::passes {
 
 /// Dρ_i/dt = Σ_j m_j v_ij·∇W_ij (Monaghan 1992, eq. 2.9) over fluid and wall neighbours (walls at
-/// rest), plus the density diffusion of Molteni & Colagrossi 2009 (eq. 9):
-/// δ h c0 Σ_j 2 (ρ_j − ρ_i) (x_ji·∇W_ij) / (r² + 0.01 h²) · m_j/ρ_j, between fluid particles only.
+/// rest), plus the density diffusion of Molteni & Colagrossi 2009 (eq. 9),
+/// δ h c0 Σ_j 2 (ρ_j − ρ_i − ρ^H_ji) (x_ji·∇W_ij) / (r² + 0.01 h²) · m_j/ρ_j, between fluid
+/// particles only. ρ^H_ji, the hydrostatic density difference between j and i, is subtracted as
+/// in Fourtakas et al. 2019 (eq. 11): diffusing it would slowly flatten the hydrostatic density
+/// profile under gravity. ρ^H_ji = ρ(p = −ρ0 g·x_ij) − ρ0 from the equation of state.
 template <int D, class Kernel>
-void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
+void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D>& gravity, ParticleSet<D>& fluid,
+                const FluidFields<D>& f,
                 const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
                 const WallFields<D>& w, Real delta, Real sound_speed) {
   const auto x = std::as_const(fluid)[f.position];
@@ -26,6 +31,7 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
   auto rate = fluid[f.density_rate];
   const Real h = kernel.smoothing_length();
   const Real diffusion = delta * h * sound_speed;
+  const Real rest_density = eos.rest_density();
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Vector<D> v_i = v[i];
     const Real rho_i = density[i];
@@ -35,7 +41,9 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
       const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
       sum += mass[j] * (v_i - v[j]).dot(grad_w);
       const Real rho_j = density[j];
-      sum += diffusion * 2 * (rho_j - rho_i) * (-x_ij.dot(grad_w)) / (r2 + Real(0.01) * h * h) * (mass[j] / rho_j);
+      const Real hydrostatic = eos.density(-rest_density * gravity.dot(x_ij)) - rest_density;
+      sum += diffusion * 2 * (rho_j - rho_i - hydrostatic) * (-x_ij.dot(grad_w)) / (r2 + Real(0.01) * h * h) *
+             (mass[j] / rho_j);
     });
     neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
       sum += wall_mass[b] * v_i.dot(kernel.gradient(x_ib, std::sqrt(r2)));

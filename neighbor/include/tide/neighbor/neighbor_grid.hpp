@@ -58,14 +58,34 @@ class CrossNeighbors {
   /// x_ij = x − x_j (minimum image) and x lies in query cell `cell`.
   template <class F>
   void for_each_in_cell(std::uint32_t cell, const Vector<D>& x, const ConstVectorView<D>& source_x, F&& f) const {
+    // Candidates are filtered in chunks without a branch (the index is always written, the
+    // count advances only inside the support): most candidates of a 3^D stencil fail the test,
+    // and a mispredicted branch per candidate cost more than the distance itself.
+    constexpr Index chunk = 64;
+    std::array<Index, chunk> inside;
+    std::array<Real, chunk> inside_r2;
     for (std::uint32_t r = range_offset_[cell]; r < range_offset_[cell + 1]; ++r) {
       const CellRange range = ranges_[r];
       const Vector<D> x_image = x - shifts_[range.shift];
-      for (Index j = range.begin; j < range.end; ++j) {
-        Vector<D> xij;
-        for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source_x.component[d][j];
-        const Real r2 = xij.squaredNorm();
-        if (r2 < support_squared_) f(j, xij, r2);
+      for (Index first = range.begin; first < range.end; first += chunk) {
+        const Index last = std::min<Index>(range.end, first + chunk);
+        Index count = 0;
+        for (Index j = first; j < last; ++j) {
+          Real r2 = 0;
+          for (int d = 0; d < D; ++d) {
+            const Real delta = x_image[d] - source_x.component[d][j];
+            r2 += delta * delta;
+          }
+          inside[count] = j;
+          inside_r2[count] = r2;
+          count += r2 < support_squared_ ? 1 : 0;
+        }
+        for (Index k = 0; k < count; ++k) {
+          const Index j = inside[k];
+          Vector<D> xij;
+          for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source_x.component[d][j];
+          f(j, xij, inside_r2[k]);
+        }
       }
     }
   }

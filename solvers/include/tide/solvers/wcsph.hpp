@@ -64,7 +64,8 @@ class Wcsph {
   /// Advances one adaptive time step; throws InstabilityError when the state leaves its bounds.
   StepReport step();
 
-  Real time() const { return time_; }
+  /// Simulated time in s, kept in double so that a float build still resolves small steps late in a run.
+  double time() const { return time_; }
   std::uint64_t step_count() const { return step_count_; }
   const ParticleSet<D>& fluid() const { return fluid_; }
   const ParticleSet<D>& walls() const { return walls_; }
@@ -79,6 +80,7 @@ class Wcsph {
   double bytes_per_particle() const;
 
  private:
+  void set_hydrostatic_density();
   void compute_interactions();
   void compute_density_rate();
   void check_state();
@@ -95,7 +97,7 @@ class Wcsph {
   FluidFields<D> fluid_fields_;
   WallFields<D> wall_fields_;
   FluidWallNeighbors<D> neighbors_;
-  Real time_ = 0;
+  double time_ = 0;
   std::uint64_t step_count_ = 0;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
