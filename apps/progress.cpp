@@ -53,8 +53,8 @@ void Progress::update(double time, std::uint64_t steps, bool force) {
   if (terminal_) {
     constexpr int width = 30;
     const int filled = static_cast<int>(fraction * width);
-    out_ << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << static_cast<int>(fraction * 100)
-         << "%  " << line << "\033[K" << std::flush;
+    out_ << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] "
+         << static_cast<int>(fraction * 100) << "%  " << line << "\033[K" << std::flush;
   } else {
     out_ << "progress " << static_cast<int>(fraction * 100) << "%: " << line << '\n' << std::flush;
   }

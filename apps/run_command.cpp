@@ -99,9 +99,10 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   std::printf("  time step   binding limit per step: %s\n", limit_counts(run_tally).c_str());
   const PassTimes& times = simulation->pass_times();
   const double total = std::max(times.total(), 1e-12);
-  std::printf("  passes      neighbour search %.0f%%, density %.0f%%, walls %.0f%%, momentum %.0f%%, integration %.0f%%\n",
-              100 * times.neighbor_search / total, 100 * times.density / total, 100 * times.wall_state / total,
-              100 * times.momentum / total, 100 * times.integration / total);
+  std::printf(
+      "  passes      neighbour search %.0f%%, density %.0f%%, walls %.0f%%, momentum %.0f%%, integration %.0f%%\n",
+      100 * times.neighbor_search / total, 100 * times.density / total, 100 * times.wall_state / total,
+      100 * times.momentum / total, 100 * times.integration / total);
   std::printf("  output      %zu frames, %s\n", writer.frames_written(), writer.xdmf_path().string().c_str());
   return exit_ok;
 }
@@ -131,8 +132,7 @@ int run_scene(const RunOptions& options) {
   const std::filesystem::path output_directory = options.output_directory.empty()
                                                      ? std::filesystem::path("runs") / options.scene_file.stem()
                                                      : options.output_directory;
-  return scene->dimension == 2 ? run<2>(*scene, options, output_directory)
-                               : run<3>(*scene, options, output_directory);
+  return scene->dimension == 2 ? run<2>(*scene, options, output_directory) : run<3>(*scene, options, output_directory);
 }
 
 int check_scene(const std::filesystem::path& scene_file) {
@@ -141,7 +141,8 @@ int check_scene(const std::filesystem::path& scene_file) {
   try {
     auto report = [&](const auto& simulation) {
       std::cout << scene_file.string() << ": ok: " << scene->dimension << "D, " << simulation.fluid().size()
-                << " fluid and " << simulation.walls().size() << " wall particles, h = " << simulation.smoothing_length()
+                << " fluid and " << simulation.walls().size()
+                << " wall particles, h = " << simulation.smoothing_length()
                 << " m, c0 = " << simulation.equation_of_state().sound_speed() << " m/s, t = " << scene->time.start
                 << " to " << scene->time.end << " s\n";
     };

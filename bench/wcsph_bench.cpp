@@ -49,11 +49,17 @@
 //                     once after the timed loop (fluid–wall pairs are not included)
 //   fluid, walls/fluid   exact fluid particle count, wall particles per fluid particle
 //   threads           tide::thread_count() inside the benchmark, to check the name
+//   cpu_util          CPU seconds of the whole process during the timed loop / (wall seconds ×
+//                     threads). Near 1 when every thread had a core to itself the whole time;
+//                     clearly below 1 with 2 threads means the threads waited (serial sections,
+//                     imbalance) or another process took a core: a row to re-run on an idle
+//                     machine before quoting it.
 //
 // Reproduce: cmake -S . -B build-bench -DTIDE_BUILD_TESTS=OFF &&
 //            cmake --build build-bench -j2 --target wcsph_bench && build-bench/bench/wcsph_bench
 
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -119,6 +125,14 @@ tide::scene::Scene dam_break(int dimension, std::size_t n) {
   return s;
 }
 
+// User + system CPU seconds of the whole process (all threads) so far.
+double process_cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 template <int D>
 std::size_t count_fluid_pairs(const tide::Wcsph<D>& simulation) {
   const tide::ConstVectorView<D> x = simulation.fluid()[simulation.fluid_fields().position];
@@ -141,12 +155,14 @@ void wcsph_step(benchmark::State& state, std::size_t n, int threads) {
     for (int s = 0; s < warmup_steps; ++s) simulation.step();
 
     const tide::PassTimes before = simulation.pass_times();
+    const double cpu_start = process_cpu_seconds();
     const auto start = std::chrono::steady_clock::now();
     for (auto _ : state) {
       benchmark::DoNotOptimize(simulation.step());
       benchmark::ClobberMemory();
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu_seconds = process_cpu_seconds() - cpu_start;
     const tide::PassTimes after = simulation.pass_times();
 
     if (simulation.removed_total() != 0) {
@@ -172,6 +188,7 @@ void wcsph_step(benchmark::State& state, std::size_t n, int threads) {
     state.counters["fluid"] = Counter(fluid);
     state.counters["walls/fluid"] = Counter(double(simulation.walls().size()) / fluid);
     state.counters["threads"] = Counter(double(tide::thread_count()));  // what ThreadLimit gave
+    state.counters["cpu_util"] = Counter(cpu_seconds / (wall_seconds * threads));
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());
   }

@@ -45,8 +45,7 @@ std::string_view cell_lookup_name(CellLookup lookup) {
 }
 
 template <int D>
-NeighborGrid<D>::NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort,
-                              CellLookup lookup)
+NeighborGrid<D>::NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort, CellLookup lookup)
     : domain_(domain),
       support_radius_(support_radius),
       support_squared_(support_radius * support_radius),
@@ -282,8 +281,8 @@ std::size_t NeighborGrid<D>::bytes_per_particle() const {
   const std::size_t total = bytes(sort_workspace_.keys) + bytes(sort_workspace_.order) +
                             bytes(sort_workspace_.key_scratch) + bytes(sort_workspace_.order_scratch) +
                             bytes(sort_workspace_.histogram) + bytes(cell_codes_) + bytes(cell_start_) +
-                            bytes(particle_cell_) + bytes(hash_codes_) + bytes(hash_slots_) +
-                            bytes(dense_slots_) + own_neighbors_.bytes();
+                            bytes(particle_cell_) + bytes(hash_codes_) + bytes(hash_slots_) + bytes(dense_slots_) +
+                            own_neighbors_.bytes();
   return total / n;
 }
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The full test job (CI runs it through .ci/run): installs the Debian packages, then
+# The full test job (CI runs it through .ci/run): installs the Debian packages, checks that
+# every C++ source is formatted by the repository's .clang-format, then
 #   1. builds everything with -Werror in double precision (build/) and runs every test;
 #   2. builds and runs the tests in single precision (build-float/);
 #   3. installs the double build and builds + runs examples/embed against the installed package;
@@ -20,6 +21,9 @@ trap 'rm -rf "$scratch"' EXIT
 
 section "Dependencies"
 bash scripts/install-deps.sh
+
+section "Formatting (clang-format, .clang-format)"
+git ls-files -z '*.cpp' '*.hpp' | xargs -0 clang-format --dry-run --Werror
 
 section "Double precision, -Werror: configure and build (build/)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTIDE_REAL=double -DTIDE_WERROR=ON -DTIDE_SANITIZE=

@@ -93,8 +93,8 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   const Real particle_mass = eos_.rest_density() * particle_volume;
 
   fluid_ = make_particles<D>(sample_fluid<D>(scene), particle_mass);
-  fluid_fields_ = {fluid_.position(),         fluid_.add_vector("velocity"), fluid_.add_vector("acceleration"),
-                   fluid_.scalar("mass"),      fluid_.add_scalar("density"),  fluid_.add_scalar("pressure"),
+  fluid_fields_ = {fluid_.position(),     fluid_.add_vector("velocity"), fluid_.add_vector("acceleration"),
+                   fluid_.scalar("mass"), fluid_.add_scalar("density"),  fluid_.add_scalar("pressure"),
                    ScalarField{}};
   if (scene.solver.density == scene::DensityMethod::continuity) {
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
@@ -134,9 +134,8 @@ void Wcsph<D>::set_hydrostatic_density() {
   Real top = -std::numeric_limits<Real>::max();
   for (std::size_t i = 0; i < fluid_.size(); ++i) top = std::max(top, up.dot(x[i]));
   top += static_cast<Real>(scene_.particle_spacing) / 2;
-  for_each_particle(fluid_.size(), [&](std::size_t i) {
-    density[i] = eos_.density(eos_.rest_density() * g * (top - up.dot(x[i])));
-  });
+  for_each_particle(fluid_.size(),
+                    [&](std::size_t i) { density[i] = eos_.density(eos_.rest_density() * g * (top - up.dot(x[i]))); });
 }
 
 template <int D>
@@ -153,8 +152,8 @@ void Wcsph<D>::compute_interactions() {
   std::visit(
       [&](const auto& kernel) {
         if (summation) {
-          passes::density_summation<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
-                                       eos_, scene_.solver.clamp_negative_pressure);
+          passes::density_summation<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_, eos_,
+                                       scene_.solver.clamp_negative_pressure);
         } else {
           const auto density = std::as_const(fluid_)[fluid_fields_.density];
           auto pressure = fluid_[fluid_fields_.pressure];
@@ -234,8 +233,8 @@ StepReport Wcsph<D>::step() {
 template <int D>
 double Wcsph<D>::bytes_per_particle() const {
   const double fluid_count = static_cast<double>(std::max<std::size_t>(fluid_.size(), 1));
-  const double fields = static_cast<double>(fluid_.bytes_per_particle() * fluid_.size() +
-                                            walls_.bytes_per_particle() * walls_.size());
+  const double fields =
+      static_cast<double>(fluid_.bytes_per_particle() * fluid_.size() + walls_.bytes_per_particle() * walls_.size());
   return (fields + static_cast<double>(neighbors_.bytes())) / fluid_count;
 }
 

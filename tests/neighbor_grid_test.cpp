@@ -152,7 +152,7 @@ std::vector<Index> brute_force(const Vector<D>& point, const ParticleSet<D>& set
       const Vector<D> image = point - shift;
       Vector<D> xij;
       for (int d = 0; d < D; ++d) xij[d] = image[d] - x.component[d][j];
-      if (xij.squaredNorm() < support * support) found.push_back(ids[j]);
+      if (squared_norm<D>(xij) < support * support) found.push_back(ids[j]);
     }
   }
   std::sort(found.begin(), found.end());
@@ -203,7 +203,7 @@ class NeighborGridAgainstBruteForce : public testing::TestWithParam<GridCase> {
       std::vector<Index> found;
       grid.for_each_neighbor(i, x, [&](Index j, const Vector<D>& xij, Real r2) {
         found.push_back(ids[j]);
-        EXPECT_EQ(r2, xij.squaredNorm());
+        EXPECT_EQ(r2, squared_norm<D>(xij));
       });
       std::sort(found.begin(), found.end());
       const auto expected = brute_force<D>(x[i], set, domain);
@@ -217,8 +217,7 @@ class NeighborGridAgainstBruteForce : public testing::TestWithParam<GridCase> {
     std::uniform_real_distribution<double> unit(-0.1, 1.1);
     for (int q = 0; q < 300; ++q) {
       Vector<D> point;
-      for (int d = 0; d < D; ++d)
-        point[d] = domain.lower[d] + Real(unit(random)) * (domain.upper[d] - domain.lower[d]);
+      for (int d = 0; d < D; ++d) point[d] = domain.lower[d] + Real(unit(random)) * (domain.upper[d] - domain.lower[d]);
       std::vector<Index> found;
       grid.for_each_neighbor_of(point, x, [&](Index j, const Vector<D>&, Real) { found.push_back(ids[j]); });
       std::sort(found.begin(), found.end());
@@ -314,7 +313,8 @@ TEST(Morton, InterleavesBitsAndDecodes) {
   for (int k = 0; k < 1000; ++k) {
     const std::uint32_t x = random(), y = random();
     std::uint64_t expected = 0;
-    for (int b = 0; b < 32; ++b) expected |= (std::uint64_t((x >> b) & 1) << (2 * b)) | (std::uint64_t((y >> b) & 1) << (2 * b + 1));
+    for (int b = 0; b < 32; ++b)
+      expected |= (std::uint64_t((x >> b) & 1) << (2 * b)) | (std::uint64_t((y >> b) & 1) << (2 * b + 1));
     EXPECT_EQ(morton_code<2>({x, y}), expected);
     EXPECT_EQ(morton_decode<2>(expected), (std::array<std::uint32_t, 2>{x, y}));
     const std::uint32_t a = random() & 0x1fffff, b3 = random() & 0x1fffff, c = random() & 0x1fffff;

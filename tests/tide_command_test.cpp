@@ -69,7 +69,8 @@ class TideCommand : public testing::Test {
   void expect_refused(const std::string& from, const std::string& to, const std::string& key_path,
                       const std::string& expectation) {
     const fs::path scene = write_scene(from, to);
-    for (const std::string& command : {std::string("check "), "run --quiet --out " + (directory_ / "out").string() + " "}) {
+    for (const std::string& command :
+         {std::string("check "), "run --quiet --out " + (directory_ / "out").string() + " "}) {
       const CommandResult result = run_tide(command + scene.string());
       EXPECT_EQ(result.exit_code, 2) << command << result.output;
       EXPECT_NE(result.output.find(scene.string()), std::string::npos) << result.output;
@@ -91,11 +92,13 @@ TEST_F(TideCommand, WrongTypeIsRefused) {
 }
 
 TEST_F(TideCommand, NonPositiveSpacingIsRefused) {
-  expect_refused(R"("particle_spacing": 0.01)", R"("particle_spacing": -0.01)", "/particle_spacing", "expected a number > 0");
+  expect_refused(R"("particle_spacing": 0.01)", R"("particle_spacing": -0.01)", "/particle_spacing",
+                 "expected a number > 0");
 }
 
 TEST_F(TideCommand, FluidOutsideTheDomainIsRefused) {
-  expect_refused(R"("max": [0.1, 0.2]}}])", R"("max": [0.1, 0.5]}}])", "/fluid/0/box/max/1", "expected a number <= 0.3");
+  expect_refused(R"("max": [0.1, 0.2]}}])", R"("max": [0.1, 0.5]}}])", "/fluid/0/box/max/1",
+                 "expected a number <= 0.3");
 }
 
 TEST_F(TideCommand, WallsLeavingNoFluidAreRefused) {

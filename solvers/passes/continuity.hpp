@@ -19,8 +19,7 @@ namespace tide::passes {
 /// profile under gravity. ρ^H_ji = ρ(p = −ρ0 g·x_ij) − ρ0 from the equation of state.
 template <int D, class Kernel>
 void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D>& gravity, ParticleSet<D>& fluid,
-                const FluidFields<D>& f,
-                const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
+                const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
                 const WallFields<D>& w, Real delta, Real sound_speed) {
   const auto x = std::as_const(fluid)[f.position];
   const auto v = std::as_const(fluid)[f.velocity];

@@ -50,8 +50,8 @@ inline Vector<D> viscous_term(const ViscositySettings& s, Real m_j, Real rho_i, 
 /// summed over fluid and wall neighbours (walls with their extrapolated p, ρ and velocity).
 template <int D, scene::ViscosityModel Model, class Kernel>
 void momentum(const Kernel& kernel, const ViscositySettings& settings, ParticleSet<D>& fluid, const FluidFields<D>& f,
-              const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
-              const WallFields<D>& w, const Vector<D>& gravity) {
+              const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
+              const Vector<D>& gravity) {
   const auto x = std::as_const(fluid)[f.position];
   const auto v = std::as_const(fluid)[f.velocity];
   const auto mass = std::as_const(fluid)[f.mass];

@@ -39,10 +39,10 @@ struct Plane {
 /// 10 × `max_speed`, the largest speed the user expects (Mach 0.1, density variation ≈ 1%).
 struct Material {
   std::string name;
-  double rest_density = 1000;          // kg/m³
-  double kinematic_viscosity = 0;      // m²/s, used by the laminar (Morris) viscosity
-  std::optional<double> sound_speed;   // m/s
-  std::optional<double> max_speed;     // m/s
+  double rest_density = 1000;         // kg/m³
+  double kinematic_viscosity = 0;     // m²/s, used by the laminar (Morris) viscosity
+  std::optional<double> sound_speed;  // m/s
+  std::optional<double> max_speed;    // m/s
 };
 
 /// A block of fluid particles filled on the lattice of the particle spacing.
@@ -85,12 +85,12 @@ struct Solver {
   DensityMethod density = DensityMethod::summation;
   double delta_sph = 0.1;  // δ-SPH diffusion coefficient (continuity density only)
   ViscosityModel viscosity = ViscosityModel::artificial;
-  double alpha = 0.02;     // Monaghan artificial viscosity, linear term
-  double beta = 0;         // Monaghan artificial viscosity, quadratic term
-  double cfl = 0.25;       // acoustic limit: dt ≤ cfl · h / (c0 + |v|max)
-  double viscous_number = 0.125;  // viscous limit: dt ≤ viscous_number · h² / ν
-  double force_number = 0.25;     // force limit: dt ≤ force_number · sqrt(h / |a|max)
-  double max_density_ratio = 1.5; // stability band: ρ/ρ0 must stay inside [1/ratio, ratio]
+  double alpha = 0.02;                  // Monaghan artificial viscosity, linear term
+  double beta = 0;                      // Monaghan artificial viscosity, quadratic term
+  double cfl = 0.25;                    // acoustic limit: dt ≤ cfl · h / (c0 + |v|max)
+  double viscous_number = 0.125;        // viscous limit: dt ≤ viscous_number · h² / ν
+  double force_number = 0.25;           // force limit: dt ≤ force_number · sqrt(h / |a|max)
+  double max_density_ratio = 1.5;       // stability band: ρ/ρ0 must stay inside [1/ratio, ratio]
   bool clamp_negative_pressure = true;  // p = max(p, 0): free-surface flows without tension
 };
 

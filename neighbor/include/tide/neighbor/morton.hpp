@@ -78,7 +78,8 @@ template <int D>
 constexpr std::array<std::uint32_t, D> morton_decode(std::uint64_t code) {
   std::array<std::uint32_t, D> cell{};
   for (int d = 0; d < D; ++d) {
-    cell[d] = static_cast<std::uint32_t>(D == 2 ? detail::compact_by_one(code >> d) : detail::compact_by_two(code >> d));
+    cell[d] =
+        static_cast<std::uint32_t>(D == 2 ? detail::compact_by_one(code >> d) : detail::compact_by_two(code >> d));
   }
   return cell;
 }

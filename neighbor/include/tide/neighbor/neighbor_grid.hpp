@@ -71,11 +71,9 @@ class CrossNeighbors {
         const Index last = std::min<Index>(range.end, first + chunk);
         Index count = 0;
         for (Index j = first; j < last; ++j) {
-          Real r2 = 0;
-          for (int d = 0; d < D; ++d) {
-            const Real delta = x_image[d] - source_x.component[d][j];
-            r2 += delta * delta;
-          }
+          Vector<D> xij;
+          for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source_x.component[d][j];
+          const Real r2 = squared_norm<D>(xij);
           inside[count] = j;
           inside_r2[count] = r2;
           count += r2 < support_squared_ ? 1 : 0;
@@ -175,10 +173,10 @@ class NeighborGrid {
   std::size_t removed_total_ = 0;
 
   PairSortWorkspace sort_workspace_;
-  std::vector<std::uint64_t> cell_codes_;   // occupied cells in Morton order
-  std::vector<Index> cell_start_;           // cell c holds sorted particles [start[c], start[c+1])
-  std::vector<Index> particle_cell_;        // occupied-cell slot of each sorted particle
-  std::vector<std::uint64_t> hash_codes_;   // open addressing: code, or invalid_code_ if empty
+  std::vector<std::uint64_t> cell_codes_;  // occupied cells in Morton order
+  std::vector<Index> cell_start_;          // cell c holds sorted particles [start[c], start[c+1])
+  std::vector<Index> particle_cell_;       // occupied-cell slot of each sorted particle
+  std::vector<std::uint64_t> hash_codes_;  // open addressing: code, or invalid_code_ if empty
   std::vector<std::uint32_t> hash_slots_;
   std::vector<std::uint32_t> dense_slots_;  // linear cell index -> slot, or no_cell
   CrossNeighbors<D> own_neighbors_;
@@ -216,7 +214,7 @@ void NeighborGrid<D>::for_each_neighbor_of(const Vector<D>& point, const ConstVe
     for (Index j = stencil[r].begin; j < stencil[r].end; ++j) {
       Vector<D> xij;
       for (int d = 0; d < D; ++d) xij[d] = image[d] - x.component[d][j];
-      const Real r2 = xij.squaredNorm();
+      const Real r2 = squared_norm<D>(xij);
       if (r2 < support_squared_) f(j, xij, r2);
     }
   }

@@ -20,8 +20,8 @@ class EquationOfState {
         sound_speed_(sound_speed),
         exponent_(exponent),
         stiffness_(tait_ ? rest_density * sound_speed * sound_speed / exponent : sound_speed * sound_speed),
-        integer_exponent_(exponent == std::floor(exponent) && exponent >= 1 && exponent <= 16 ? static_cast<int>(exponent)
-                                                                                              : 0) {}
+        integer_exponent_(
+            exponent == std::floor(exponent) && exponent >= 1 && exponent <= 16 ? static_cast<int>(exponent) : 0) {}
 
   Real pressure(Real density) const {
     if (tait_) return stiffness_ * (power(density / rest_density_) - Real(1));
