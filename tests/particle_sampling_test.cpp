@@ -1,0 +1,86 @@
+// Fluid and wall particles from scene geometry: fluid fills the blocks but never a solid; walls
+// are `layers` deep behind the container faces and inside each obstacle's surface; all particles
+// sit on one lattice, so no two are closer than one spacing.
+
+#include "tide/solvers/particle_sampling.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace tide {
+namespace {
+
+scene::Scene obstacle_scene() {
+  scene::Scene s;
+  s.dimension = 2;
+  s.particle_spacing = 0.01;
+  s.materials.push_back({"water", 1000, 0, std::nullopt, 1.0});
+  s.fluid.push_back({0, scene::Box{{0, 0, 0}, {1, 0.6, 0}}});
+  s.walls.layers = 3;
+  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {1, 1, 0}}, true};
+  s.walls.obstacles.push_back(scene::Ball{{0.5, 0.3, 0}, 0.1});
+  s.walls.obstacles.push_back(scene::Box{{0.1, 0.1, 0}, {0.2, 0.2, 0}});
+  // A slope through the lower right corner: solid below y = x − 0.697 (between lattice points).
+  s.walls.obstacles.push_back(scene::Plane{{0.8, 0.103, 0}, {-1, 1, 0}});
+  s.domain.box = {{-0.03, -0.03, 0}, {1.03, 2, 0}};
+  return s;
+}
+
+bool inside_solid(const Vector<2>& p) {
+  const bool in_ball = (p - Vector<2>(0.5, 0.3)).norm() < 0.1;
+  const bool in_box = p.x() >= 0.1 && p.x() < 0.2 && p.y() >= 0.1 && p.y() < 0.2;
+  const bool below_slope = p.y() - (p.x() - 0.697) < 0;
+  return in_ball || in_box || below_slope;
+}
+
+TEST(ParticleSampling, FluidFillsTheBlockOutsideEverySolid) {
+  const scene::Scene s = obstacle_scene();
+  const auto fluid = sample_fluid<2>(s);
+  std::size_t expected = 0;
+  for (int i = 0; i < 100; ++i)
+    for (int j = 0; j < 60; ++j) expected += inside_solid(Vector<2>(0.005 + 0.01 * i, 0.005 + 0.01 * j)) ? 0 : 1;
+  EXPECT_EQ(fluid.size(), expected);
+  for (const auto& p : fluid) EXPECT_FALSE(inside_solid(p)) << p.transpose();
+}
+
+TEST(ParticleSampling, WallsLineContainerAndObstaclesWithoutOverlap) {
+  const scene::Scene s = obstacle_scene();
+  const auto fluid = sample_fluid<2>(s);
+  const auto walls = sample_walls<2>(s);
+  // The ball's wall is a ring 3 spacings deep: its area π(r² − (r − 3Δx)²) in lattice cells.
+  std::size_t ring = 0;
+  for (const auto& p : walls) {
+    const Real from_centre = (p - Vector<2>(0.5, 0.3)).norm();
+    if (from_centre < 0.1) {
+      ++ring;
+      EXPECT_GE(from_centre, Real(0.1 - 0.03 - 1e-9));
+    }
+  }
+  const double ring_cells = std::numbers::pi * (0.1 * 0.1 - 0.07 * 0.07) / (0.01 * 0.01);
+  EXPECT_NEAR(static_cast<double>(ring), ring_cells, 0.1 * ring_cells);
+  // Container walls reach the rim (y < 1) but not above it: the top is open.
+  for (const auto& p : walls) EXPECT_LT(p.y(), 1.0);
+  // One lattice for everything: no two particles closer than one spacing (no duplicates where
+  // the slope meets the container, nor between fluid and walls).
+  std::vector<Vector<2>> all = fluid;
+  all.insert(all.end(), walls.begin(), walls.end());
+  for (std::size_t a = 0; a < all.size(); ++a)
+    for (std::size_t b = a + 1; b < all.size(); ++b) ASSERT_GT((all[a] - all[b]).norm(), Real(0.0099)) << a << " " << b;
+}
+
+TEST(ParticleSampling, ThreeDimensionalContainerHasLayersOnFiveFaces) {
+  scene::Scene s;
+  s.dimension = 3;
+  s.particle_spacing = 0.1;
+  s.walls.layers = 2;
+  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {1, 1, 1}}, true};
+  s.domain.box = {{-0.2, -0.2, -0.2}, {1.2, 1.2, 2}};
+  // Outer box 14 × 14 × 12 cells (open top: no layers above z = 1) minus the 10³ inner cells.
+  EXPECT_EQ(sample_walls<3>(s).size(), std::size_t(14 * 14 * 12 - 10 * 10 * 10));
+}
+
+}  // namespace
+}  // namespace tide
