@@ -194,8 +194,8 @@ void wcsph_step(benchmark::State& state, std::size_t n, int threads) {
   }
 }
 
-// Fixed per size: about a second of timed steps or more at 2 threads, and a whole binary of a few
-// minutes on 2 cores.
+// Fixed per size: 0.6 to 8 seconds of timed steps per row on the 2-core reference machine, about
+// 2 minutes for the whole binary (docs/performance.md).
 benchmark::IterationCount iterations(std::size_t n) {
   if (n >= 1'000'000) return 5;
   if (n >= 100'000) return 20;
