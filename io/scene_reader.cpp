@@ -652,9 +652,9 @@ class SceneParser {
   }
 
   void read_solver(const Node& node, scene::Solver& solver) const {
-    expect_object(node,
-                  {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha", "beta",
-                   "cfl", "viscous_number", "force_number", "max_density_ratio", "clamp_negative_pressure"});
+    expect_object(node, {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha",
+                         "beta", "cfl", "viscous_number", "force_number", "max_density_ratio",
+                         "clamp_negative_pressure", "gravity_ramp_time"});
     read_optional(node, "scheme", solver.scheme, scheme_names);
     read_optional(node, "equation_of_state", solver.equation_of_state, equation_of_state_names);
     read_optional(node, "tait_exponent", solver.tait_exponent, positive);
@@ -670,6 +670,7 @@ class SceneParser {
     if (const Node clamp = child(node, "clamp_negative_pressure"); clamp.present()) {
       solver.clamp_negative_pressure = boolean(clamp);
     }
+    read_optional(node, "gravity_ramp_time", solver.gravity_ramp_time, non_negative);
   }
 
   scene::Time read_time(const Node& node) const {

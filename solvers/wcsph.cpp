@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -142,8 +143,20 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
 
   neighbors_.set_walls(walls_);
   neighbors_.update_fluid(fluid_);
-  compute_interactions();
+  compute_interactions(gravity_at(time_));
   check_state();
+}
+
+template <int D>
+Vector<D> Wcsph<D>::gravity_at(double t) const {
+  // Adami, Hu & Adams 2012 (Sec. 4.1) start their hydrostatic tank this way:
+  // g(t) = g (sin(π (t/t_ramp − 1/2)) + 1) / 2 for t < t_ramp, so the column is loaded without
+  // the pressure wave a sudden start sends through it.
+  const double ramp_time = scene_.solver.gravity_ramp_time;
+  const double elapsed = t - scene_.time.start;
+  if (!(ramp_time > 0) || elapsed >= ramp_time) return gravity_;
+  const double share = 0.5 * (std::sin(std::numbers::pi * (elapsed / ramp_time - 0.5)) + 1);
+  return static_cast<Real>(share) * gravity_;
 }
 
 template <int D>
@@ -152,12 +165,13 @@ void Wcsph<D>::set_hydrostatic_density() {
   // highest particle (plus half a spacing, its share of the column), ρ from the equation of state.
   auto density = fluid_[fluid_fields_.density];
   const auto x = std::as_const(fluid_)[fluid_fields_.position];
-  const Real g = gravity_.norm();
+  const Vector<D> gravity = gravity_at(time_);
+  const Real g = gravity.norm();
   if (g == 0 || fluid_.empty()) {
     for (Real& rho : density) rho = eos_.rest_density();
     return;
   }
-  const Vector<D> up = -gravity_ / g;
+  const Vector<D> up = -gravity / g;
   Real top = -std::numeric_limits<Real>::max();
   for (std::size_t i = 0; i < fluid_.size(); ++i) top = std::max(top, up.dot(x[i]));
   top += static_cast<Real>(scene_.particle_spacing) / 2;
@@ -166,7 +180,7 @@ void Wcsph<D>::set_hydrostatic_density() {
 }
 
 template <int D>
-void Wcsph<D>::compute_interactions() {
+void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
   const bool summation = scene_.solver.density == scene::DensityMethod::summation;
   passes::ViscositySettings viscosity{scene_.solver.viscosity,
                                       scene_.walls.slip == scene::WallSlip::no_slip,
@@ -191,15 +205,15 @@ void Wcsph<D>::compute_interactions() {
           });
         }
         lap(clock, pass_times_.density);
-        passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, eos_, gravity_,
+        passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, eos_, gravity,
                               scene_.solver.clamp_negative_pressure);
         lap(clock, pass_times_.wall_state);
         if (scene_.solver.viscosity == scene::ViscosityModel::artificial) {
           passes::momentum<D, scene::ViscosityModel::artificial>(kernel, viscosity, fluid_, fluid_fields_, neighbors_,
-                                                                 walls_, wall_fields_, gravity_);
+                                                                 walls_, wall_fields_, gravity);
         } else {
           passes::momentum<D, scene::ViscosityModel::laminar>(kernel, viscosity, fluid_, fluid_fields_, neighbors_,
-                                                              walls_, wall_fields_, gravity_);
+                                                              walls_, wall_fields_, gravity);
         }
         lap(clock, pass_times_.momentum);
       },
@@ -207,10 +221,10 @@ void Wcsph<D>::compute_interactions() {
 }
 
 template <int D>
-void Wcsph<D>::compute_density_rate() {
+void Wcsph<D>::compute_density_rate(const Vector<D>& gravity) {
   std::visit(
       [&](const auto& kernel) {
-        passes::continuity<D>(kernel, eos_, gravity_, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
+        passes::continuity<D>(kernel, eos_, gravity, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
                               static_cast<Real>(scene_.solver.delta_sph), eos_.sound_speed());
       },
       kernel_);
@@ -236,14 +250,15 @@ StepReport Wcsph<D>::step() {
   lap(clock, pass_times_.integration);
   report.removed = neighbors_.update_fluid(fluid_);
   lap(clock, pass_times_.neighbor_search);
+  const Vector<D> gravity = gravity_at(time_ + dt);
   if (scene_.solver.density == scene::DensityMethod::continuity) {
-    compute_density_rate();
+    compute_density_rate(gravity);
     auto density = fluid_[fluid_fields_.density];
     const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
     for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] += dt * rate[i]; });
     lap(clock, pass_times_.density);
   }
-  compute_interactions();
+  compute_interactions(gravity);
   clock = std::chrono::steady_clock::now();
   {
     auto v = fluid_[fluid_fields_.velocity];

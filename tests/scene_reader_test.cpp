@@ -33,7 +33,8 @@ json full_2d_scene() {
     "gravity": [0.5, -9.8],
     "solver": {"scheme": "wcsph", "equation_of_state": "linear", "tait_exponent": 5, "density": "continuity",
                "delta_sph": 0.2, "viscosity": "laminar", "alpha": 0.05, "beta": 0.1, "cfl": 0.3,
-               "viscous_number": 0.1, "force_number": 0.2, "max_density_ratio": 1.2},
+               "viscous_number": 0.1, "force_number": 0.2, "max_density_ratio": 1.2,
+               "gravity_ramp_time": 0.25},
     "time": {"start": 0.5, "end": 2.0, "output_interval": 0.02},
     "output": {"fields": ["position", "velocity", "id", "mass"]}
   })");
@@ -149,6 +150,7 @@ TEST(SceneReader, Full2DSceneRoundTrips) {
   EXPECT_EQ(s.solver.viscous_number, 0.1);
   EXPECT_EQ(s.solver.force_number, 0.2);
   EXPECT_EQ(s.solver.max_density_ratio, 1.2);
+  EXPECT_EQ(s.solver.gravity_ramp_time, 0.25);
   EXPECT_EQ(s.time.start, 0.5);
   EXPECT_EQ(s.time.end, 2.0);
   EXPECT_EQ(s.time.output_interval, 0.02);
@@ -364,6 +366,8 @@ TEST(SceneReaderRefuses, OtherNumbersOutOfRange) {
   expect_refused(with(full_2d_scene(), "/materials/0/kinematic_viscosity", -1e-6), "/materials/0/kinematic_viscosity",
                  "a number >= 0");
   expect_refused(with(full_2d_scene(), "/solver/max_density_ratio", 1), "/solver/max_density_ratio", "a number > 1");
+  expect_refused(with(full_2d_scene(), "/solver/gravity_ramp_time", -0.1), "/solver/gravity_ramp_time",
+                 "a number >= 0");
   expect_refused(with(full_2d_scene(), "/fluid/1/ball/radius", 0), "/fluid/1/ball/radius", "a number > 0");
 }
 

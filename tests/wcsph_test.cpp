@@ -20,15 +20,16 @@ namespace {
 
 constexpr double gravity = 9.81;
 
-// A tank of width W (and depth W in 3D) filled to height H, with n particle rows over H.
-// 2D uses Wendland C2 with h = 1.7 Δx; 3D the cubic spline with h = 1.3 Δx.
+// A tank of width W (and depth W in 3D) filled to height H, with n particle rows over H, Wendland
+// C2 kernel. 2D: summation density, h = 1.7 Δx. 3D: continuity density, h = 1.5 Δx, gravity
+// raised over 0.5 s (see Tank3DSettlesToHydrostaticPressure for why).
 scene::Scene hydrostatic_scene(int dimension, double height, double width, int rows) {
   scene::Scene s;
   s.source = "hydrostatic test";
   s.dimension = dimension;
   s.particle_spacing = height / rows;
-  s.kernel = dimension == 2 ? KernelType::wendland_c2 : KernelType::cubic_spline;
-  s.smoothing_ratio = dimension == 2 ? 1.7 : 1.3;
+  s.kernel = KernelType::wendland_c2;
+  s.smoothing_ratio = dimension == 2 ? 1.7 : 1.5;
   s.materials.push_back({"water", 1000, 1e-6, std::nullopt, std::sqrt(2 * gravity * height)});
   const int up = dimension - 1;
   scene::Vec top{width, width, width};
@@ -37,7 +38,7 @@ scene::Scene hydrostatic_scene(int dimension, double height, double width, int r
   scene::Vec rim = top;
   rim[up] = 1.5 * height;
   s.walls.container = scene::Container{scene::Box{{0, 0, 0}, rim}, true};
-  s.walls.layers = dimension == 2 ? 4 : 3;  // cover the kernel support (3.4 and 2.6 spacings)
+  s.walls.layers = 4;  // cover the kernel support (3.4 and 3 spacings)
   const double margin = s.walls.layers * s.particle_spacing;
   s.domain.box = {{-margin, -margin, -margin}, {width + margin, width + margin, width + margin}};
   s.domain.box.max[up] = 3 * height;
@@ -47,18 +48,21 @@ scene::Scene hydrostatic_scene(int dimension, double height, double width, int r
   // Stronger artificial viscosity than for flows: it damps the acoustic oscillation of the
   // column started from a uniform lattice, so the tank comes to rest in a few seconds.
   s.solver.alpha = 0.1;
+  if (dimension == 3) {
+    s.solver.density = scene::DensityMethod::continuity;
+    s.solver.delta_sph = 0;
+    s.solver.gravity_ramp_time = 0.5;
+  }
   return s;
 }
 
 // After settling, in 5 horizontal bands: the mean pressure of each band against ρ0 g (H − ȳ)
-// (exact for the band mean of a linear profile). Bands deeper than one band from the surface
-// must be within 2%; the top band lies within a kernel support of the free surface, where the
-// summation density is truncated, and is not compared. Speed below 1e-3 sqrt(gH), |ρ/ρ0 − 1| < 1%.
+// (exact for the band mean of a linear profile), within 2%, for every band that lies entirely
+// more than a kernel support below the free surface; nearer, the kernel is truncated and the
+// pressure is not that of the bulk (the top band in 2D, the top two in 3D at 8 rows).
+// |ρ/ρ0 − 1| < 1%. Returns the maximum speed, for the rest criterion.
 template <int D>
-void check_hydrostatic(double height, double width, int rows, double settle_time,
-                       scene::DensityMethod density = scene::DensityMethod::summation, bool check_rest = true) {
-  scene::Scene s = hydrostatic_scene(D, height, width, rows);
-  s.solver.density = density;
+double check_hydrostatic(const scene::Scene& s, double height, double settle_time) {
   Wcsph<D> simulation(s);
   while (simulation.time() < settle_time) simulation.step();
 
@@ -79,32 +83,50 @@ void check_hydrostatic(double height, double width, int rows, double settle_time
     ++count[band];
     max_density_error = std::max(max_density_error, std::abs(rho[i] / 1000.0 - 1));
   }
-  for (int band = 0; band < bands - 1; ++band) {
-    ASSERT_GT(count[band], 0);
+  const double support = kernel_support_factor(s.kernel) * simulation.smoothing_length();
+  for (int band = 0; (band + 1) * height / bands <= height - support; ++band) {
+    if (count[band] == 0) {
+      ADD_FAILURE() << "band " << band << " is empty";
+      continue;
+    }
     const double mean_y = height_sum[band] / count[band];
     const double expected = 1000 * gravity * (height - mean_y);
     EXPECT_NEAR(pressure_sum[band] / count[band], expected, 0.02 * expected) << "band " << band << " at y = " << mean_y;
   }
   EXPECT_LT(max_density_error, 0.01);
-  if (check_rest) {
-    if constexpr (std::is_same_v<Real, float>) {
-      // Known limitation, not a tolerance: in float the drift dt·v of a particle nearly at rest
-      // is a few ulp of its position, so rounding keeps stirring the tank (measured 5.9e-3 m/s,
-      // 2.7x the bound). Positions relative to their cell would cure it; until then the rest
-      // criterion is asserted in double only.
-      GTEST_SKIP() << "rest criterion not reachable with float positions (see comment)";
-    }
-    EXPECT_LT(simulation.max_speed(), 1e-3 * std::sqrt(gravity * height));
-  }
+  return simulation.max_speed();
 }
 
-TEST(WcsphHydrostatic, Tank2DSettlesToHydrostaticPressure) { check_hydrostatic<2>(0.5, 0.5, 25, 7.0); }
+// The rest criterion of the hydrostatic tests.
+double rest_bound(double height) { return 1e-3 * std::sqrt(gravity * height); }
 
-// The 3D tank reaches the hydrostatic profile, but does not yet come to rest within
-// 1e-3 sqrt(gH): a mode near the free surface keeps 2–6e-3 m/s (issue 3, open). The rest
-// criterion is therefore not asserted here; the profile and density are.
-TEST(WcsphHydrostatic, Tank3DReachesHydrostaticPressure) {
-  check_hydrostatic<3>(0.2, 0.2, 8, 3.0, scene::DensityMethod::summation, false);
+TEST(WcsphHydrostatic, Tank2DSettlesToHydrostaticPressure) {
+  const double max_speed = check_hydrostatic<2>(hydrostatic_scene(2, 0.5, 0.5, 25), 0.5, 7.0);
+  if constexpr (std::is_same_v<Real, float>) {
+    // Known limitation, not a tolerance: with float positions (ulp 6e-8 m at 0.5 m, 3e-6 Δx) the
+    // summation density of a particle at rest jitters by ~1e-6, which the stiff equation of state
+    // (c0 = 31 m/s) turns into pressure noise of ~1 Pa that keeps stirring the tank (max speed
+    // 6.3e-3 m/s, 2.9x the bound). Positions relative to their cell would cure it; until then
+    // the rest criterion of the 2D summation tank is asserted in double only (the 3D tank, with
+    // continuity density, meets it in float too).
+    GTEST_SKIP() << "rest criterion not reachable with float positions (see comment): max speed " << max_speed
+                 << " m/s";
+  }
+  EXPECT_LT(max_speed, rest_bound(0.5));
+}
+
+// In 3D, summation density does not let the tank come to rest: the truncated kernel at the free
+// surface leaves the top layers under-dense and pressureless, and they rearrange over the layer
+// below (peaks of 5e-2 m/s, still 2–6e-3 m/s after 4 s at 8–10 rows). Continuity density has no
+// such surface deficit. Two more choices, each measured at 8 rows:
+// - no δ-SPH diffusion: with δ = 0.1 the Molteni–Colagrossi flux, inconsistent where the kernel
+//   is truncated, drives a mode at the surface corners back up to 1.3e-3 m/s by 5 s;
+// - gravity raised over 0.5 s (Adami, Hu & Adams 2012): started at once from the hydrostatic
+//   density, the surface layer (p = ρ0 g Δx/2 with half a kernel) is kicked up, and continuity,
+//   which under-counts its expansion, leaves the band pressures 1.6–2.2% above ρ0 g (H − y).
+//   With the ramp they are within 1%, and the speed is 4e-4 m/s at 2 s.
+TEST(WcsphHydrostatic, Tank3DSettlesToHydrostaticPressure) {
+  EXPECT_LT(check_hydrostatic<3>(hydrostatic_scene(3, 0.2, 0.2, 8), 0.2, 2.0), rest_bound(0.2));
 }
 
 // Continuity density with δ-SPH from a hydrostatic start keeps the hydrostatic profile: with
@@ -112,7 +134,9 @@ TEST(WcsphHydrostatic, Tank3DReachesHydrostaticPressure) {
 // hydrostatic density difference (Fourtakas et al. 2019) keeps it within 2%. (The rest bound is
 // the summation test's; here the profile is what the diffusion term can break.)
 TEST(WcsphHydrostatic, ContinuityDensityKeepsTheHydrostaticProfile) {
-  check_hydrostatic<2>(0.5, 0.5, 20, 3.0, scene::DensityMethod::continuity, false);
+  scene::Scene s = hydrostatic_scene(2, 0.5, 0.5, 20);
+  s.solver.density = scene::DensityMethod::continuity;
+  check_hydrostatic<2>(s, 0.5, 3.0);
 }
 
 Curve read_martin_moyce() {

@@ -92,6 +92,7 @@ struct Solver {
   double force_number = 0.25;           // force limit: dt ≤ force_number · sqrt(h / |a|max)
   double max_density_ratio = 1.5;       // stability band: ρ/ρ0 must stay inside [1/ratio, ratio]
   bool clamp_negative_pressure = true;  // p = max(p, 0): free-surface flows without tension
+  double gravity_ramp_time = 0;         // s: gravity rises smoothly from 0 over this time (0: at once)
 };
 
 struct Time {

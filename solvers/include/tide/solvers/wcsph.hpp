@@ -80,9 +80,11 @@ class Wcsph {
   double bytes_per_particle() const;
 
  private:
+  /// Gravity at time t: the scene's, raised smoothly from zero over solver.gravity_ramp_time.
+  Vector<D> gravity_at(double t) const;
   void set_hydrostatic_density();
-  void compute_interactions();
-  void compute_density_rate();
+  void compute_interactions(const Vector<D>& gravity);
+  void compute_density_rate(const Vector<D>& gravity);
   void check_state();
 
   scene::Scene scene_;
