@@ -260,13 +260,6 @@ constexpr std::array<Named<scene::ViscosityModel>, 2> viscosity_model_names{
 constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
     {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
 
-/// Wall layers a kernel needs so that a fluid particle touching a wall has wall particles across
-/// its whole support: ceil(support radius / spacing).
-int required_wall_layers(KernelType kernel, double smoothing_ratio) {
-  const double support_in_spacings = static_cast<double>(kernel_support_factor(kernel)) * smoothing_ratio;
-  return static_cast<int>(std::ceil(support_in_spacings - 1e-9));  // 2 × 1.5 is 3 layers, not 4
-}
-
 /// Without a "domain" key: the container's inner box with room for its wall layers on every
 /// side, and above an open top as much room again as the container is high, so that a splash
 /// stays inside the domain.
@@ -352,7 +345,7 @@ class SceneParser {
     scene.dimension = dimension_ = read_dimension(child(root, "dimension"));
     scene.particle_spacing = spacing_ = number(child(root, "particle_spacing"), positive);
     if (const Node kernel = child(root, "kernel"); kernel.present()) read_kernel(kernel, scene);
-    scene.walls.layers = required_wall_layers(scene.kernel, scene.smoothing_ratio);
+    scene.walls.layers = scene::required_wall_layers(scene.kernel, scene.smoothing_ratio);
     scene.materials = read_materials(child(root, "materials"));
     scene.fluid = read_fluid(child(root, "fluid"), scene.materials);
     if (const Node walls = child(root, "walls"); walls.present()) read_walls(walls, scene);
@@ -572,7 +565,7 @@ class SceneParser {
   std::vector<scene::FluidBlock> read_fluid(const Node& node, const std::vector<scene::Material>& materials) const {
     std::vector<scene::FluidBlock> fluid;
     for (const Node& entry : elements(node, 1, "a non-empty array of fluid blocks")) {
-      expect_object(entry, {"material", "box", "ball"});
+      expect_object(entry, {"material", "box", "ball", "velocity"});
       scene::FluidBlock block;
       block.material = material_index(child(entry, "material"), materials);
       const std::string_view shape = shape_key(entry, {"box", "ball"});
@@ -581,9 +574,28 @@ class SceneParser {
       } else {
         block.shape = read_ball(child(entry, shape));
       }
+      if (const Node velocity = child(entry, "velocity"); velocity.present())
+        block.velocity = initial_velocity(velocity);
       fluid.push_back(block);
     }
     return fluid;
+  }
+
+  /// A uniform velocity [vx, vy(, vz)] or a named field {"taylor_green": {...}}.
+  std::variant<Vec, scene::TaylorGreenVelocity> initial_velocity(const Node& node) const {
+    if (node.value->is_array()) return vector(node);
+    if (!node.value->is_object()) {
+      fail(node, "a velocity array of " + std::to_string(dimension_) + " numbers or {\"taylor_green\": {...}}");
+    }
+    expect_object(node, {"taylor_green"});
+    const Node field = child(node, "taylor_green");
+    if (!field.present()) fail(node, "an object with the key \"taylor_green\"");
+    if (dimension_ != 2) fail(field, "a 2D scene (the Taylor-Green field is two-dimensional)");
+    expect_object(field, {"amplitude", "length"});
+    scene::TaylorGreenVelocity taylor_green;
+    read_optional(field, "amplitude", taylor_green.amplitude, positive);
+    read_optional(field, "length", taylor_green.length, positive);
+    return taylor_green;
   }
 
   std::size_t material_index(const Node& node, const std::vector<scene::Material>& materials) const {
@@ -618,7 +630,7 @@ class SceneParser {
   /// Fewer layers than the kernel support leave a fluid particle at a wall with a truncated
   /// kernel: the wall lets fluid through or pushes it too weakly.
   int read_layers(const Node& node, const scene::Scene& scene) const {
-    const int least = required_wall_layers(scene.kernel, scene.smoothing_ratio);
+    const int least = scene::required_wall_layers(scene.kernel, scene.smoothing_ratio);
     const double support_in_spacings = static_cast<double>(kernel_support_factor(scene.kernel)) * scene.smoothing_ratio;
     const std::string expected = "an integer >= " + std::to_string(least) + " (ceil(kernel support / spacing), " +
                                  "the support being " + format_number(support_in_spacings) + " spacings)";
@@ -628,12 +640,19 @@ class SceneParser {
     return static_cast<int>(layers);
   }
 
-  std::variant<scene::Box, scene::Ball, scene::Plane> read_obstacle(const Node& node) const {
-    expect_object(node, {"box", "ball", "plane"});
+  scene::Obstacle read_obstacle(const Node& node) const {
+    expect_object(node, {"box", "ball", "plane", "velocity"});
+    scene::Obstacle obstacle;
     const std::string_view shape = shape_key(node, {"box", "ball", "plane"});
-    if (shape == "box") return read_box(child(node, shape));
-    if (shape == "ball") return read_ball(child(node, shape));
-    return read_plane(child(node, shape));
+    if (shape == "box") {
+      obstacle.shape = read_box(child(node, shape));
+    } else if (shape == "ball") {
+      obstacle.shape = read_ball(child(node, shape));
+    } else {
+      obstacle.shape = read_plane(child(node, shape));
+    }
+    read_optional(node, "velocity", obstacle.velocity);
+    return obstacle;
   }
 
   scene::Domain read_domain(const Node& node, const scene::Walls& walls) const {
@@ -654,7 +673,7 @@ class SceneParser {
   void read_solver(const Node& node, scene::Solver& solver) const {
     expect_object(node, {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha",
                          "beta", "cfl", "viscous_number", "force_number", "max_density_ratio",
-                         "clamp_negative_pressure", "gravity_ramp_time"});
+                         "clamp_negative_pressure", "gravity_ramp_time", "background_pressure"});
     read_optional(node, "scheme", solver.scheme, scheme_names);
     read_optional(node, "equation_of_state", solver.equation_of_state, equation_of_state_names);
     read_optional(node, "tait_exponent", solver.tait_exponent, positive);
@@ -671,6 +690,7 @@ class SceneParser {
       solver.clamp_negative_pressure = boolean(clamp);
     }
     read_optional(node, "gravity_ramp_time", solver.gravity_ramp_time, non_negative);
+    read_optional(node, "background_pressure", solver.background_pressure, non_negative);
   }
 
   scene::Time read_time(const Node& node) const {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <variant>
 
 namespace tide {
@@ -50,22 +51,21 @@ Real depth_in_box(const Vector<D>& p, const scene::Box& box) {
 
 // Signed depth of p inside a solid obstacle (positive inside).
 template <int D>
-Real depth_in_obstacle(const Vector<D>& p, const std::variant<scene::Box, scene::Ball, scene::Plane>& obstacle) {
-  if (const auto* box = std::get_if<scene::Box>(&obstacle)) return depth_in_box<D>(p, *box);
-  if (const auto* ball = std::get_if<scene::Ball>(&obstacle))
+Real depth_in_obstacle(const Vector<D>& p, const scene::Obstacle& obstacle) {
+  if (const auto* box = std::get_if<scene::Box>(&obstacle.shape)) return depth_in_box<D>(p, *box);
+  if (const auto* ball = std::get_if<scene::Ball>(&obstacle.shape))
     return Real(ball->radius) - (p - to_vector<D>(ball->centre)).norm();
-  const auto& plane = std::get<scene::Plane>(obstacle);
+  const auto& plane = std::get<scene::Plane>(obstacle.shape);
   const Vector<D> normal = to_vector<D>(plane.normal).normalized();
   return -(p - to_vector<D>(plane.point)).dot(normal);
 }
 
 template <int D>
-void obstacle_bounds(const scene::Scene& scene, const std::variant<scene::Box, scene::Ball, scene::Plane>& obstacle,
-                     Vector<D>& lower, Vector<D>& upper) {
-  if (const auto* box = std::get_if<scene::Box>(&obstacle)) {
+void obstacle_bounds(const scene::Scene& scene, const scene::Obstacle& obstacle, Vector<D>& lower, Vector<D>& upper) {
+  if (const auto* box = std::get_if<scene::Box>(&obstacle.shape)) {
     lower = to_vector<D>(box->min);
     upper = to_vector<D>(box->max);
-  } else if (const auto* ball = std::get_if<scene::Ball>(&obstacle)) {
+  } else if (const auto* ball = std::get_if<scene::Ball>(&obstacle.shape)) {
     lower = to_vector<D>(ball->centre) - Vector<D>::Constant(Real(ball->radius));
     upper = to_vector<D>(ball->centre) + Vector<D>::Constant(Real(ball->radius));
   } else {
@@ -74,7 +74,36 @@ void obstacle_bounds(const scene::Scene& scene, const std::variant<scene::Box, s
   }
 }
 
+// The region whose lattice points outside the inner box are the container's wall particles.
+template <int D>
+void container_bounds(const scene::Container& container, Real thickness, Vector<D>& lower, Vector<D>& upper) {
+  lower = to_vector<D>(container.inner.min) - Vector<D>::Constant(thickness);
+  upper = to_vector<D>(container.inner.max) + Vector<D>::Constant(thickness);
+  if (container.open_top) upper[D - 1] = Real(container.inner.max[D - 1]);
+}
+
+template <int D>
+bool made_by_container(const Vector<D>& p, const scene::Container& container, Real thickness) {
+  Vector<D> lower, upper;
+  container_bounds<D>(container, thickness, lower, upper);
+  for (int d = 0; d < D; ++d)
+    if (!(p[d] >= lower[d] && p[d] < upper[d])) return false;
+  return !inside_box<D>(p, container.inner);
+}
+
 }  // namespace
+
+template <int D>
+Vector<D> initial_velocity(const scene::FluidBlock& block, const Vector<D>& x) {
+  if (const auto* uniform = std::get_if<scene::Vec>(&block.velocity)) return to_vector<D>(*uniform);
+  const auto& vortex = std::get<scene::TaylorGreenVelocity>(block.velocity);
+  const Real k = Real(2 * std::numbers::pi / vortex.length);
+  const Real u = static_cast<Real>(vortex.amplitude);
+  Vector<D> v = Vector<D>::Zero();
+  v[0] = -u * std::cos(k * x[0]) * std::sin(k * x[1]);
+  v[1] = u * std::sin(k * x[0]) * std::cos(k * x[1]);
+  return v;
+}
 
 template <int D>
 Vector<D> lattice_anchor(const scene::Scene& scene) {
@@ -82,10 +111,10 @@ Vector<D> lattice_anchor(const scene::Scene& scene) {
 }
 
 template <int D>
-std::vector<Vector<D>> sample_fluid(const scene::Scene& scene) {
+ParticleSamples<D> sample_fluid(const scene::Scene& scene) {
   const Real spacing = static_cast<Real>(scene.particle_spacing);
   const Vector<D> anchor = lattice_anchor<D>(scene);
-  std::vector<Vector<D>> points;
+  ParticleSamples<D> samples;
   for (const scene::FluidBlock& block : scene.fluid) {
     Vector<D> lower, upper;
     if (const auto* box = std::get_if<scene::Box>(&block.shape)) {
@@ -103,28 +132,28 @@ std::vector<Vector<D>> sample_fluid(const scene::Scene& scene) {
       if (scene.walls.container && !inside_box<D>(p, scene.walls.container->inner)) return;
       for (const auto& obstacle : scene.walls.obstacles)
         if (depth_in_obstacle<D>(p, obstacle) > 0) return;
-      points.push_back(p);
+      samples.positions.push_back(p);
+      samples.velocities.push_back(initial_velocity<D>(block, p));
     });
   }
-  return points;
+  return samples;
 }
 
 template <int D>
-std::vector<Vector<D>> sample_walls(const scene::Scene& scene) {
+ParticleSamples<D> sample_walls(const scene::Scene& scene) {
   const Real spacing = static_cast<Real>(scene.particle_spacing);
   const Real thickness = spacing * static_cast<Real>(scene.walls.layers);
   const Vector<D> anchor = lattice_anchor<D>(scene);
-  std::vector<Vector<D>> points;
-  if (scene.walls.container) {
-    const auto& container = *scene.walls.container;
-    const Vector<D> inner_lower = to_vector<D>(container.inner.min);
-    const Vector<D> inner_upper = to_vector<D>(container.inner.max);
-    Vector<D> outer_upper = inner_upper + Vector<D>::Constant(thickness);
-    if (container.open_top) outer_upper[D - 1] = inner_upper[D - 1];
-    for_each_lattice_point<D>(anchor, spacing, inner_lower - Vector<D>::Constant(thickness), outer_upper,
-                              [&](const Vector<D>& p) {
-                                if (!inside_box<D>(p, container.inner)) points.push_back(p);
-                              });
+  ParticleSamples<D> samples;
+  const auto& container = scene.walls.container;
+  if (container) {
+    Vector<D> lower, upper;
+    container_bounds<D>(*container, thickness, lower, upper);
+    for_each_lattice_point<D>(anchor, spacing, lower, upper, [&](const Vector<D>& p) {
+      if (inside_box<D>(p, container->inner)) return;
+      samples.positions.push_back(p);
+      samples.velocities.push_back(Vector<D>::Zero());
+    });
   }
   const auto& obstacles = scene.walls.obstacles;
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
@@ -134,22 +163,25 @@ std::vector<Vector<D>> sample_walls(const scene::Scene& scene) {
       const Real depth = depth_in_obstacle<D>(p, obstacles[k]);
       if (!(depth > 0 && depth <= thickness)) return;
       // A point already made by the container or an earlier obstacle is not made twice.
-      if (scene.walls.container && !inside_box<D>(p, scene.walls.container->inner)) return;
+      if (container && made_by_container<D>(p, *container, thickness)) return;
       for (std::size_t earlier = 0; earlier < k; ++earlier) {
         const Real earlier_depth = depth_in_obstacle<D>(p, obstacles[earlier]);
         if (earlier_depth > 0 && earlier_depth <= thickness) return;
       }
-      points.push_back(p);
+      samples.positions.push_back(p);
+      samples.velocities.push_back(to_vector<D>(obstacles[k].velocity));
     });
   }
-  return points;
+  return samples;
 }
 
 template Vector<2> lattice_anchor<2>(const scene::Scene&);
 template Vector<3> lattice_anchor<3>(const scene::Scene&);
-template std::vector<Vector<2>> sample_fluid<2>(const scene::Scene&);
-template std::vector<Vector<3>> sample_fluid<3>(const scene::Scene&);
-template std::vector<Vector<2>> sample_walls<2>(const scene::Scene&);
-template std::vector<Vector<3>> sample_walls<3>(const scene::Scene&);
+template ParticleSamples<2> sample_fluid<2>(const scene::Scene&);
+template ParticleSamples<3> sample_fluid<3>(const scene::Scene&);
+template ParticleSamples<2> sample_walls<2>(const scene::Scene&);
+template ParticleSamples<3> sample_walls<3>(const scene::Scene&);
+template Vector<2> initial_velocity<2>(const scene::FluidBlock&, const Vector<2>&);
+template Vector<3> initial_velocity<3>(const scene::FluidBlock&, const Vector<3>&);
 
 }  // namespace tide

@@ -45,17 +45,30 @@ GridDomain<D> grid_domain(const scene::Scene& scene) {
   return domain;
 }
 
+// A particle set with position, mass and, unless `velocity_name` is empty, the sampled
+// velocities in the field of that name.
 template <int D>
-ParticleSet<D> make_particles(const std::vector<Vector<D>>& points, Real mass) {
+ParticleSet<D> make_particles(const ParticleSamples<D>& samples, Real mass, const std::string& velocity_name) {
   ParticleSet<D> set;
-  set.append(points.size());
+  set.append(samples.size());
   auto x = set[set.position()];
   const auto m = set.add_scalar("mass");
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    x.set(i, points[i]);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    x.set(i, samples.positions[i]);
     set[m][i] = mass;
   }
+  if (!velocity_name.empty()) {
+    auto v = set[set.add_vector(velocity_name)];
+    for (std::size_t i = 0; i < samples.size(); ++i) v.set(i, samples.velocities[i]);
+  }
   return set;
+}
+
+template <int D>
+bool any_moving_wall(const scene::Scene& scene) {
+  for (const scene::Obstacle& obstacle : scene.walls.obstacles)
+    if (to_vector<D>(obstacle.velocity) != Vector<D>::Zero()) return true;
+  return false;
 }
 
 // Σ_k W(|k| Δx) over the lattice around one particle: the summation density of a particle deep
@@ -110,7 +123,8 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
       smoothing_length_(static_cast<Real>(scene.smoothing_ratio * scene.particle_spacing)),
       kernel_(make_kernel<D>(scene.kernel, smoothing_length_)),
       eos_(scene.solver.equation_of_state, static_cast<Real>(single_material(scene).rest_density),
-           sound_speed_of(single_material(scene)), static_cast<Real>(scene.solver.tait_exponent)),
+           sound_speed_of(single_material(scene)), static_cast<Real>(scene.solver.tait_exponent),
+           static_cast<Real>(scene.solver.background_pressure)),
       kinematic_viscosity_(static_cast<Real>(single_material(scene).kinematic_viscosity)),
       gravity_(to_vector<D>(scene.gravity)),
       neighbors_(grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_) {
@@ -120,17 +134,23 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
       eos_.rest_density() /
       std::visit([&](const auto& kernel) { return lattice_kernel_sum<D>(kernel, scene); }, kernel_);
 
-  fluid_ = make_particles<D>(sample_fluid<D>(scene), particle_mass);
-  fluid_fields_ = {fluid_.position(),     fluid_.add_vector("velocity"), fluid_.add_vector("acceleration"),
-                   fluid_.scalar("mass"), fluid_.add_scalar("density"),  fluid_.add_scalar("pressure"),
+  fluid_ = make_particles<D>(sample_fluid<D>(scene), particle_mass, "velocity");
+  fluid_fields_ = {fluid_.position(),     fluid_.vector("velocity"),    fluid_.add_vector("acceleration"),
+                   fluid_.scalar("mass"), fluid_.add_scalar("density"), fluid_.add_scalar("pressure"),
                    ScalarField{}};
   if (scene.solver.density == scene::DensityMethod::continuity) {
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
     set_hydrostatic_density();
   }
-  walls_ = make_particles<D>(sample_walls<D>(scene), particle_mass);
-  wall_fields_ = {walls_.position(), walls_.add_vector("velocity"), walls_.scalar("mass"), walls_.add_scalar("density"),
-                  walls_.add_scalar("pressure")};
+  const bool moving_walls = any_moving_wall<D>(scene);
+  walls_ = make_particles<D>(sample_walls<D>(scene), particle_mass, moving_walls ? "surface_velocity" : "");
+  wall_fields_ = {walls_.position(),
+                  walls_.add_vector("velocity"),
+                  walls_.scalar("mass"),
+                  walls_.add_scalar("density"),
+                  walls_.add_scalar("pressure"),
+                  std::nullopt};
+  if (moving_walls) wall_fields_.surface_velocity = walls_.vector("surface_velocity");
 
   time_step_rule_.smoothing_length = smoothing_length_;
   time_step_rule_.sound_speed = eos_.sound_speed();

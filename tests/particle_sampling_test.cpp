@@ -21,10 +21,10 @@ scene::Scene obstacle_scene() {
   s.fluid.push_back({0, scene::Box{{0, 0, 0}, {1, 0.6, 0}}});
   s.walls.layers = 3;
   s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {1, 1, 0}}, true};
-  s.walls.obstacles.push_back(scene::Ball{{0.5, 0.3, 0}, 0.1});
-  s.walls.obstacles.push_back(scene::Box{{0.1, 0.1, 0}, {0.2, 0.2, 0}});
+  s.walls.obstacles.push_back({scene::Ball{{0.5, 0.3, 0}, 0.1}, {}});
+  s.walls.obstacles.push_back({scene::Box{{0.1, 0.1, 0}, {0.2, 0.2, 0}}, {}});
   // A slope through the lower right corner: solid below y = x − 0.697 (between lattice points).
-  s.walls.obstacles.push_back(scene::Plane{{0.8, 0.103, 0}, {-1, 1, 0}});
+  s.walls.obstacles.push_back({scene::Plane{{0.8, 0.103, 0}, {-1, 1, 0}}, {}});
   s.domain.box = {{-0.03, -0.03, 0}, {1.03, 2, 0}};
   return s;
 }
@@ -38,7 +38,7 @@ bool inside_solid(const Vector<2>& p) {
 
 TEST(ParticleSampling, FluidFillsTheBlockOutsideEverySolid) {
   const scene::Scene s = obstacle_scene();
-  const auto fluid = sample_fluid<2>(s);
+  const auto fluid = sample_fluid<2>(s).positions;
   std::size_t expected = 0;
   for (int i = 0; i < 100; ++i)
     for (int j = 0; j < 60; ++j) expected += inside_solid(Vector<2>(0.005 + 0.01 * i, 0.005 + 0.01 * j)) ? 0 : 1;
@@ -48,8 +48,8 @@ TEST(ParticleSampling, FluidFillsTheBlockOutsideEverySolid) {
 
 TEST(ParticleSampling, WallsLineContainerAndObstaclesWithoutOverlap) {
   const scene::Scene s = obstacle_scene();
-  const auto fluid = sample_fluid<2>(s);
-  const auto walls = sample_walls<2>(s);
+  const auto fluid = sample_fluid<2>(s).positions;
+  const auto walls = sample_walls<2>(s).positions;
   // The ball's wall is a ring 3 spacings deep: its area π(r² − (r − 3Δx)²) in lattice cells.
   std::size_t ring = 0;
   for (const auto& p : walls) {
@@ -80,6 +80,37 @@ TEST(ParticleSampling, ThreeDimensionalContainerHasLayersOnFiveFaces) {
   s.domain.box = {{-0.2, -0.2, -0.2}, {1.2, 1.2, 2}};
   // Outer box 14 × 14 × 12 cells (open top: no layers above z = 1) minus the 10³ inner cells.
   EXPECT_EQ(sample_walls<3>(s).size(), std::size_t(14 * 14 * 12 - 10 * 10 * 10));
+}
+
+// A lid (plane obstacle) on an open container, as in the lid-driven cavity: its layers above
+// the rim are all made, once each, and carry the lid's velocity; the container's carry none.
+TEST(ParticleSampling, MovingLidOnAnOpenContainer) {
+  scene::Scene s;
+  s.dimension = 2;
+  s.particle_spacing = 0.1;
+  s.walls.layers = 2;
+  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {1, 1, 0}}, true};
+  s.walls.obstacles.push_back({scene::Plane{{0, 1, 0}, {0, -1, 0}}, {2, 0, 0}});
+  s.domain.box = {{-0.2, -0.2, 0}, {1.2, 1.2, 0}};
+  const auto walls = sample_walls<2>(s);
+  std::size_t lid = 0;
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    const bool above_rim = walls.positions[i].y() > 1;
+    lid += above_rim ? 1 : 0;
+    EXPECT_EQ(walls.velocities[i], above_rim ? Vector<2>(2, 0) : Vector<2>(0, 0)) << walls.positions[i].transpose();
+  }
+  EXPECT_EQ(lid, std::size_t(14 * 2));                            // the lid spans the domain, 2 layers
+  EXPECT_EQ(walls.size() - lid, std::size_t(14 * 12 - 10 * 10));  // container: 3 faces up to the rim
+}
+
+// The Taylor–Green block starts with u = −U cos 2πx/L sin 2πy/L, v = U sin 2πx/L cos 2πy/L.
+TEST(ParticleSampling, TaylorGreenInitialVelocity) {
+  scene::FluidBlock block{0, scene::Box{{0, 0, 0}, {2, 2, 0}}, scene::TaylorGreenVelocity{3, 2}};
+  const Vector<2> x(0.25, 0.125);
+  const double k = std::numbers::pi;
+  const Vector<2> v = initial_velocity<2>(block, x);
+  EXPECT_NEAR(v.x(), -3 * std::cos(k * 0.25) * std::sin(k * 0.125), 1e-6);
+  EXPECT_NEAR(v.y(), 3 * std::sin(k * 0.25) * std::cos(k * 0.125), 1e-6);
 }
 
 }  // namespace

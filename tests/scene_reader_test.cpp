@@ -132,10 +132,10 @@ TEST(SceneReader, Full2DSceneRoundTrips) {
   EXPECT_EQ(s.walls.container->inner.max, vec(1.6, 1.2));
   EXPECT_FALSE(s.walls.container->open_top);
   ASSERT_EQ(s.walls.obstacles.size(), 3u);
-  EXPECT_EQ(std::get<scene::Box>(s.walls.obstacles[0]).max, vec(0.9, 0.1));
-  EXPECT_EQ(std::get<scene::Ball>(s.walls.obstacles[1]).radius, 0.05);
-  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[2]).point, vec(0, 0.05));
-  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[2]).normal, vec(0.1, 1));
+  EXPECT_EQ(std::get<scene::Box>(s.walls.obstacles[0].shape).max, vec(0.9, 0.1));
+  EXPECT_EQ(std::get<scene::Ball>(s.walls.obstacles[1].shape).radius, 0.05);
+  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[2].shape).point, vec(0, 0.05));
+  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[2].shape).normal, vec(0.1, 1));
 
   EXPECT_EQ(s.gravity, vec(0.5, -9.8));
   EXPECT_EQ(s.solver.scheme, scene::Scheme::wcsph);
@@ -181,7 +181,7 @@ TEST(SceneReader, Full3DSceneRoundTrips) {
   EXPECT_EQ(std::get<scene::Ball>(s.fluid[1].shape).centre, vec(0.8, 0.2, 0.3));
   EXPECT_EQ(s.walls.layers, 4);
   EXPECT_TRUE(s.walls.container->open_top);
-  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[0]).normal, vec(0, 0, 1));
+  EXPECT_EQ(std::get<scene::Plane>(s.walls.obstacles[0].shape).normal, vec(0, 0, 1));
   EXPECT_EQ(s.gravity, vec(0, 0, -9.81));
   EXPECT_EQ(s.solver.cfl, 0.2);
   EXPECT_EQ(s.time.end, 1.5);
@@ -249,6 +249,30 @@ TEST(SceneReader, DefaultWallLayersCoverTheKernelSupport) {
   // The quintic spline reaches 3 h = 3.9 spacings at h = 1.3 spacings: 4 layers.
   json document = with(minimal_scene(), "/kernel", {{"type", "quintic_spline"}});
   EXPECT_EQ(parse(document).walls.layers, 4);
+}
+
+TEST(SceneReader, ReadsWallAndFluidVelocities) {
+  json document = with(full_2d_scene(), "/walls/obstacles/0/velocity", {1.5, 0});
+  document = with(document, "/fluid/0/velocity", {{"taylor_green", {{"amplitude", 2}}}});
+  document = with(document, "/fluid/1/velocity", {0, -1});
+  document = with(document, "/solver/background_pressure", 50);
+  const scene::Scene s = parse(document);
+  EXPECT_EQ(s.walls.obstacles[0].velocity, vec(1.5, 0));
+  EXPECT_EQ(s.walls.obstacles[1].velocity, vec(0, 0));
+  const auto& vortex = std::get<scene::TaylorGreenVelocity>(s.fluid[0].velocity);
+  EXPECT_EQ(vortex.amplitude, 2);
+  EXPECT_EQ(vortex.length, 1);
+  EXPECT_EQ(std::get<scene::Vec>(s.fluid[1].velocity), vec(0, -1));
+  EXPECT_EQ(s.solver.background_pressure, 50);
+}
+
+TEST(SceneReaderRefuses, MalformedVelocities) {
+  expect_refused(with(full_2d_scene(), "/fluid/0/velocity", "fast"), "/fluid/0/velocity",
+                 "a velocity array of 2 numbers or {\"taylor_green\": {...}}");
+  expect_refused(with(full_2d_scene(), "/fluid/0/velocity", {{"vortex", 1}}), "/fluid/0/velocity/vortex",
+                 "one of the keys \"taylor_green\"");
+  expect_refused(with(full_2d_scene(), "/walls/obstacles/0/velocity", {1, 0, 0}), "/walls/obstacles/0/velocity",
+                 "an array of 2 numbers [x, y]");
 }
 
 TEST(SceneReader, AcceptsComments) {

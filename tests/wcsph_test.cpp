@@ -1,18 +1,16 @@
-// WCSPH validation at low resolution: hydrostatic tanks against ρ g (H − y), the 2D dam break
-// against Martin & Moyce 1952, momentum conservation and the stability guard.
+// WCSPH validation at low resolution: hydrostatic tanks against ρ g (H − y), momentum
+// conservation and the stability guard. (The dam break against Martin & Moyce 1952 and the
+// other validation cases: validation_cases_test.cpp.)
 
 #include "tide/solvers/wcsph.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <type_traits>
 
-#include "tide/solvers/front_offset_fit.hpp"
 #include "tide/solvers/instability.hpp"
 
 namespace tide {
@@ -137,59 +135,6 @@ TEST(WcsphHydrostatic, ContinuityDensityKeepsTheHydrostaticProfile) {
   scene::Scene s = hydrostatic_scene(2, 0.5, 0.5, 20);
   s.solver.density = scene::DensityMethod::continuity;
   check_hydrostatic<2>(s, 0.5, 3.0);
-}
-
-Curve read_martin_moyce() {
-  std::ifstream file(std::string(TIDE_TEST_DATA_DIR) + "/martin_moyce_1952_front.csv");
-  Curve curve;
-  std::string line;
-  while (std::getline(file, line)) {
-    if (line.empty() || line[0] == '#' || line[0] == 'T') continue;
-    std::istringstream fields(line);
-    double t = 0, z = 0;
-    char comma = 0;
-    fields >> t >> comma >> z;
-    curve.x.push_back(t);
-    curve.y.push_back(z);
-  }
-  return curve;
-}
-
-// Martin & Moyce's column a × 2a (a = 2.25 in) in a tank 5a long, at a/Δx = 20. The surge front
-// Z = x_front/a against T = t sqrt(2g/a): every sound SPH code runs ahead of the experiment,
-// whose gate took time to open, so one start offset δT is fitted; it must lie in [0.1, 0.4] and
-// leave a mean error of at most 4% over 0.4 ≤ T ≤ 2.5 (the criterion).
-TEST(WcsphDamBreak, FrontFollowsMartinMoyceAfterStartOffset) {
-  const double a = 0.05715;
-  scene::Scene s;
-  s.source = "dam break test";
-  s.particle_spacing = a / 20;
-  s.smoothing_ratio = 1.7;
-  s.materials.push_back({"water", 1000, 1e-6, std::nullopt, std::sqrt(2 * gravity * 2 * a)});
-  s.fluid.push_back({0, scene::Box{{0, 0, 0}, {a, 2 * a, 0}}});
-  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {5 * a, 3 * a, 0}}, true};
-  s.walls.slip = scene::WallSlip::free_slip;
-  s.walls.layers = 4;
-  const double margin = s.walls.layers * s.particle_spacing;
-  s.domain.box = {{-margin, -margin, 0}, {5 * a + margin, 6 * a, 0}};
-  Wcsph<2> simulation(s);
-  const double time_scale = std::sqrt(2 * gravity / a);
-  Curve front;
-  while (simulation.time() * time_scale < 2.7) {
-    simulation.step();
-    const auto x = simulation.fluid()[simulation.fluid_fields().position];
-    double x_front = 0;
-    for (std::size_t i = 0; i < simulation.fluid().size(); ++i) x_front = std::max<double>(x_front, x[i][0]);
-    front.x.push_back(simulation.time() * time_scale);
-    front.y.push_back((x_front + s.particle_spacing / 2) / a);
-  }
-  const OffsetFit fit = fit_start_offset(front, read_martin_moyce(), 0.4, 2.5);
-  EXPECT_GE(fit.offset, 0.1);
-  EXPECT_LE(fit.offset, 0.4);
-  EXPECT_LE(fit.error_after_offset, 0.04);
-  RecordProperty("start_offset", std::to_string(fit.offset));
-  RecordProperty("raw_error", std::to_string(fit.raw_error));
-  RecordProperty("error_after_offset", std::to_string(fit.error_after_offset));
 }
 
 // Fully periodic box without gravity or walls, random velocities: pressure and artificial

@@ -11,8 +11,8 @@
 
 namespace tide::passes {
 
-/// Dρ_i/dt = Σ_j m_j v_ij·∇W_ij (Monaghan 1992, eq. 2.9) over fluid and wall neighbours (walls at
-/// rest), plus the density diffusion of Molteni & Colagrossi 2009 (eq. 9),
+/// Dρ_i/dt = Σ_j m_j v_ij·∇W_ij (Monaghan 1992, eq. 2.9) over fluid and wall neighbours (a wall
+/// particle moving with its wall's surface velocity), plus the density diffusion of Molteni & Colagrossi 2009 (eq. 9),
 /// δ h c0 Σ_j 2 (ρ_j − ρ_i − ρ^H_ji) (x_ji·∇W_ij) / (r² + 0.01 h²) · m_j/ρ_j, between fluid
 /// particles only. ρ^H_ji, the hydrostatic density difference between j and i, is subtracted as
 /// in Fourtakas et al. 2019 (eq. 11): diffusing it would slowly flatten the hydrostatic density
@@ -27,6 +27,7 @@ void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D
   const auto density = std::as_const(fluid)[f.density];
   const auto wall_x = walls[w.position];
   const auto wall_mass = walls[w.mass];
+  const ConstVectorView<D> surface_velocity = w.surface_velocity ? walls[*w.surface_velocity] : ConstVectorView<D>{};
   auto rate = fluid[f.density_rate];
   const Real h = kernel.smoothing_length();
   const Real diffusion = delta * h * sound_speed;
@@ -45,7 +46,8 @@ void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D
              (mass[j] / rho_j);
     });
     neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
-      sum += wall_mass[b] * v_i.dot(kernel.gradient(x_ib, std::sqrt(r2)));
+      const Vector<D> v_ib = w.surface_velocity ? Vector<D>(v_i - surface_velocity[b]) : v_i;
+      sum += wall_mass[b] * v_ib.dot(kernel.gradient(x_ib, std::sqrt(r2)));
     });
     rate[i] = sum;
   });

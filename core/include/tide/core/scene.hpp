@@ -6,6 +6,7 @@
 // scene uses the first two.
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -45,10 +46,19 @@ struct Material {
   std::optional<double> max_speed;    // m/s
 };
 
-/// A block of fluid particles filled on the lattice of the particle spacing.
+/// The Taylor–Green vortex in the periodic square [0, L)²: u = −U cos(2πx/L) sin(2πy/L),
+/// v = U sin(2πx/L) cos(2πy/L) (Taylor & Green 1937).
+struct TaylorGreenVelocity {
+  double amplitude = 1;  // U, m/s
+  double length = 1;     // L, m
+};
+
+/// A block of fluid particles filled on the lattice of the particle spacing, with its initial
+/// velocity: uniform, or a named field.
 struct FluidBlock {
   std::size_t material = 0;  // index into Scene::materials
   std::variant<Box, Ball> shape;
+  std::variant<Vec, TaylorGreenVelocity> velocity{Vec{}};
 };
 
 enum class WallSlip { no_slip, free_slip };
@@ -60,11 +70,26 @@ struct Container {
   bool open_top = true;
 };
 
+/// A solid obstacle. `velocity` is the velocity of its surface for the no-slip condition; its
+/// particles stay in place, so it models a wall sliding in its own plane (a Couette plate, the
+/// lid of a cavity).
+struct Obstacle {
+  std::variant<Box, Ball, Plane> shape;
+  Vec velocity{};
+};
+
+/// Wall layers a kernel needs so that a fluid particle touching a wall has wall particles across
+/// its whole support: ceil(support radius / spacing).
+inline int required_wall_layers(KernelType kernel, double smoothing_ratio) {
+  const double support_in_spacings = static_cast<double>(kernel_support_factor(kernel)) * smoothing_ratio;
+  return static_cast<int>(std::ceil(support_in_spacings - 1e-9));  // 2 × 1.5 is 3 layers, not 4
+}
+
 struct Walls {
   int layers = 3;  // boundary particle layers; at least kernel support / spacing
   WallSlip slip = WallSlip::no_slip;
   std::optional<Container> container;
-  std::vector<std::variant<Box, Ball, Plane>> obstacles;
+  std::vector<Obstacle> obstacles;
 };
 
 /// The region particles may occupy; a particle leaving it on a closed axis is removed.
@@ -93,6 +118,7 @@ struct Solver {
   double max_density_ratio = 1.5;       // stability band: ρ/ρ0 must stay inside [1/ratio, ratio]
   bool clamp_negative_pressure = true;  // p = max(p, 0): free-surface flows without tension
   double gravity_ramp_time = 0;         // s: gravity rises smoothly from 0 over this time (0: at once)
+  double background_pressure = 0;       // Pa, added to the equation of state (closed or periodic flows)
 };
 
 struct Time {

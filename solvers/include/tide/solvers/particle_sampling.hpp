@@ -21,14 +21,27 @@ Vector<D> to_vector(const scene::Vec& v) {
 template <int D>
 Vector<D> lattice_anchor(const scene::Scene& scene);
 
-/// Fluid particle positions: lattice points inside the fluid blocks, leaving out points inside
-/// solid obstacles or outside the container's inner box.
+/// Sampled particles: positions and, index for index, velocities.
 template <int D>
-std::vector<Vector<D>> sample_fluid(const scene::Scene& scene);
+struct ParticleSamples {
+  std::vector<Vector<D>> positions;
+  std::vector<Vector<D>> velocities;
+  std::size_t size() const { return positions.size(); }
+};
 
-/// Wall particle positions: `walls.layers` layers behind each face of the container (up to its
-/// rim when the top is open) and inside each obstacle's surface.
+/// Fluid particles: lattice points inside the fluid blocks, leaving out points inside solid
+/// obstacles or outside the container's inner box, with their block's initial velocity.
 template <int D>
-std::vector<Vector<D>> sample_walls(const scene::Scene& scene);
+ParticleSamples<D> sample_fluid(const scene::Scene& scene);
+
+/// Wall particles: `walls.layers` layers behind each face of the container (up to its rim when
+/// the top is open) and inside each obstacle's surface, with the surface velocity of the wall
+/// they belong to (zero for the container).
+template <int D>
+ParticleSamples<D> sample_walls(const scene::Scene& scene);
+
+/// The initial velocity a fluid block gives a particle at x.
+template <int D>
+Vector<D> initial_velocity(const scene::FluidBlock& block, const Vector<D>& x);
 
 }  // namespace tide

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -33,6 +34,7 @@ struct WallFields {
   ScalarField mass;
   ScalarField density;
   ScalarField pressure;
+  std::optional<VectorField> surface_velocity;  // the wall's own velocity; only when some wall moves
 };
 
 /// Wall-clock seconds spent in each part of the step, summed since construction.

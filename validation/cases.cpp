@@ -1,0 +1,25 @@
+#include <algorithm>
+
+#include "cases/case_support.hpp"
+#include "tide/validation/case.hpp"
+
+namespace tide::validation {
+
+const std::vector<Case>& cases() {
+  static const std::vector<Case> all{hydrostatic_case(2), hydrostatic_case(3), poiseuille_case(),
+                                     couette_case(),      taylor_green_case(), dam_break_2d_case()};
+  return all;
+}
+
+const Case* find_case(std::string_view name) {
+  const auto& all = cases();
+  const auto found = std::find_if(all.begin(), all.end(), [&](const Case& c) { return c.name == name; });
+  return found == all.end() ? nullptr : &*found;
+}
+
+const std::vector<std::string>& scheme_names() {
+  static const std::vector<std::string> names{"wcsph", "wcsph_continuity"};
+  return names;
+}
+
+}  // namespace tide::validation

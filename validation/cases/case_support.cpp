@@ -1,0 +1,54 @@
+#include "case_support.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace tide::validation {
+
+double smoothing_ratio_for(KernelType kernel) {
+  return kernel == KernelType::wendland_c2 || kernel == KernelType::wendland_c4 ? 1.7 : 1.3;
+}
+
+void apply_variant(scene::Scene& scene, const Variant& variant) {
+  if (variant.scheme == "wcsph") {
+    scene.solver.density = scene::DensityMethod::summation;
+  } else if (variant.scheme == "wcsph_continuity") {
+    scene.solver.density = scene::DensityMethod::continuity;
+    scene.solver.delta_sph = 0.1;
+  } else {
+    throw std::invalid_argument("unknown scheme \"" + variant.scheme + "\"");
+  }
+  scene.kernel = variant.kernel;
+  scene.smoothing_ratio = smoothing_ratio_for(variant.kernel);
+  scene.walls.layers = scene::required_wall_layers(scene.kernel, scene.smoothing_ratio);
+}
+
+Curve read_reference(const std::string& file, int x_column, int y_column) {
+  const std::string path = std::string(TIDE_VALIDATION_DATA_DIR) + "/" + file;
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open the reference table");
+  Curve curve;
+  std::string line;
+  bool header_seen = false;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (!header_seen) {
+      header_seen = true;
+      continue;
+    }
+    std::vector<double> values;
+    std::istringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ',')) values.push_back(field.empty() ? NAN : std::stod(field));
+    const auto needed = static_cast<std::size_t>(std::max(x_column, y_column));
+    if (values.size() <= needed) throw std::runtime_error(path + ": a row has fewer columns than expected");
+    if (std::isnan(values[static_cast<std::size_t>(y_column)])) continue;
+    curve.x.push_back(values[static_cast<std::size_t>(x_column)]);
+    curve.y.push_back(values[static_cast<std::size_t>(y_column)]);
+  }
+  if (curve.x.empty()) throw std::runtime_error(path + ": no data rows");
+  return curve;
+}
+
+}  // namespace tide::validation

@@ -1,0 +1,78 @@
+#pragma once
+
+// What the validation cases share: applying a variant to a scene, timing the stepping, reading
+// reference tables and building the run record.
+
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "tide/core/scene.hpp"
+#include "tide/solvers/front_offset_fit.hpp"
+#include "tide/solvers/wcsph.hpp"
+#include "tide/validation/case.hpp"
+
+namespace tide::validation {
+
+/// h/Δx used with each kernel: 1.7 for the Wendland kernels (Dehnen & Aly 2012 recommend
+/// h/Δx ≥ 1.5 against pairing), 1.3 for the B-splines (Monaghan 2005).
+double smoothing_ratio_for(KernelType kernel);
+
+/// Sets the scheme and kernel of `variant` on the scene, with h/Δx and wall layers to match.
+/// Throws std::invalid_argument for an unknown scheme.
+void apply_variant(scene::Scene& scene, const Variant& variant);
+
+/// Reads columns `x_column` and `y_column` of a reference CSV in validation/data ('#' lines are
+/// its source header; the first other line names the columns).
+Curve read_reference(const std::string& file, int x_column = 0, int y_column = 1);
+
+/// Steps `simulation` until its time reaches `end`, calling `observe(simulation)` after each
+/// step; returns the wall seconds spent stepping (observers included, which are cheap).
+template <int D, class Observer>
+double run_until(Wcsph<D>& simulation, double end, Observer&& observe) {
+  const auto start = std::chrono::steady_clock::now();
+  while (simulation.time() < end * (1 - 1e-12)) {
+    simulation.step();
+    observe(simulation);
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <int D>
+RunRecord make_record(const std::string& case_name, const Variant& variant, int resolution, const Wcsph<D>& simulation,
+                      double wall_seconds, std::vector<Metric> metrics) {
+  RunRecord record;
+  record.case_name = case_name;
+  record.scheme = variant.scheme;
+  record.kernel = std::string(kernel_name(variant.kernel));
+  record.resolution = resolution;
+  record.particles = simulation.fluid().size();
+  record.steps = simulation.step_count();
+  record.wall_seconds = wall_seconds;
+  record.metrics = std::move(metrics);
+  return record;
+}
+
+/// sqrt(Σ (a_i − b_i)²) / sqrt(Σ b_i²) accumulated one pair at a time.
+class RelativeL2 {
+ public:
+  void add(double computed, double reference) {
+    difference_ += (computed - reference) * (computed - reference);
+    norm_ += reference * reference;
+  }
+  double value() const { return norm_ > 0 ? std::sqrt(difference_ / norm_) : 0; }
+
+ private:
+  double difference_ = 0;
+  double norm_ = 0;
+};
+
+// Each case, built in its own file.
+Case hydrostatic_case(int dimension);
+Case poiseuille_case();
+Case couette_case();
+Case taylor_green_case();
+Case dam_break_2d_case();
+
+}  // namespace tide::validation

@@ -1,0 +1,97 @@
+// 2D dam break: the surge front of a water column a wide and 2a high (a = 2.25 in) released in a
+// tank 5a long, against the experiments of Martin & Moyce 1952 and Koshizuka & Oka 1996.
+
+#include <algorithm>
+#include <cmath>
+
+#include "case_support.hpp"
+
+namespace tide::validation {
+namespace {
+
+constexpr double gravity = 9.81;
+constexpr double column_width = 0.05715;  // a = 2.25 in
+constexpr double first_compared = 0.4;    // T range compared (the front reaches the far wall at T ≈ 2.9)
+constexpr double last_compared = 2.5;
+
+scene::Scene column_scene(int cells, const Variant& variant) {
+  const double a = column_width;
+  scene::Scene s;
+  s.source = "2d dam break";
+  s.dimension = 2;
+  s.particle_spacing = a / cells;
+  s.materials.push_back({"water", 1000, 1e-6, std::nullopt, std::sqrt(2 * gravity * 2 * a)});
+  s.fluid.push_back({0, scene::Box{{0, 0, 0}, {a, 2 * a, 0}}});
+  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {5 * a, 3 * a, 0}}, true};
+  s.walls.slip = scene::WallSlip::free_slip;
+  apply_variant(s, variant);
+  const double margin = s.walls.layers * s.particle_spacing;
+  s.domain.box = {{-margin, -margin, 0}, {5 * a + margin, 6 * a, 0}};
+  s.gravity = {0, -gravity, 0};
+  return s;
+}
+
+/// The front Z = x_front/a against T = t sqrt(2g/a) until T = `end_T`; the front is the
+/// rightmost particle plus half a spacing (the edge of its volume).
+Curve dam_break_front(int cells, const Variant& variant, double end_T, double* wall_seconds, std::size_t* particles,
+                      std::uint64_t* steps) {
+  const scene::Scene s = column_scene(cells, variant);
+  Wcsph<2> simulation(s);
+  const double time_scale = std::sqrt(2 * gravity / column_width);
+  Curve front;
+  const auto track = [&](const Wcsph<2>& sim) {
+    const auto x = sim.fluid()[sim.fluid_fields().position];
+    double x_front = 0;
+    for (std::size_t i = 0; i < sim.fluid().size(); ++i) x_front = std::max<double>(x_front, x[i][0]);
+    front.x.push_back(sim.time() * time_scale);
+    front.y.push_back((x_front + s.particle_spacing / 2) / column_width);
+  };
+  *wall_seconds = run_until(simulation, end_T / time_scale, track);
+  *particles = simulation.fluid().size();
+  *steps = simulation.step_count();
+  return front;
+}
+
+RunRecord run_column(int cells, const Variant& variant) {
+  RunRecord record;
+  const Curve front =
+      dam_break_front(cells, variant, last_compared + 0.2, &record.wall_seconds, &record.particles, &record.steps);
+  const OffsetFit martin_moyce =
+      fit_start_offset(front, read_reference("martin_moyce_1952_front.csv"), first_compared, last_compared);
+  const OffsetFit koshizuka_oka =
+      fit_start_offset(front, read_reference("koshizuka_oka_1996_front.csv"), first_compared, last_compared);
+  record.case_name = "dam_break_2d";
+  record.scheme = variant.scheme;
+  record.kernel = std::string(kernel_name(variant.kernel));
+  record.resolution = cells;
+  record.metrics = {{"front_error_after_offset", martin_moyce.error_after_offset},
+                    {"front_raw_error", martin_moyce.raw_error},
+                    {"start_offset", martin_moyce.offset},
+                    {"front_error_after_offset_ko", koshizuka_oka.error_after_offset},
+                    {"front_raw_error_ko", koshizuka_oka.raw_error},
+                    {"start_offset_ko", koshizuka_oka.offset}};
+  return record;
+}
+
+}  // namespace
+
+Case dam_break_2d_case() {
+  Case c;
+  c.name = "dam_break_2d";
+  c.title = "2D dam break, surge front";
+  c.reference =
+      "Martin & Moyce 1952 (tables 2 and 6, a = 2.25 in) and Koshizuka & Oka 1996: front Z = x/a against "
+      "T = t sqrt(2g/a)";
+  c.resolution_meaning = "particles across the column width a";
+  c.metric_notes = {
+      "front_error_after_offset: mean |Z − Z_exp(T − δT)| / Z_exp over 0.4 ≤ T ≤ 2.5 against Martin & Moyce, after "
+      "fitting one start offset δT for the experiment's gate",
+      "front_raw_error: the same with δT = 0", "start_offset: the fitted δT",
+      "front_error_after_offset_ko, front_raw_error_ko, start_offset_ko: the same against Koshizuka & Oka"};
+  c.resolutions = {10, 20, 40, 80};
+  c.test_resolution = 20;
+  c.run = run_column;
+  return c;
+}
+
+}  // namespace tide::validation

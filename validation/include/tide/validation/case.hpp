@@ -1,0 +1,65 @@
+#pragma once
+
+// A validation case: a scene built at a chosen resolution, run to its end time, and error
+// metrics computed by the code against an analytic solution or an experiment. The registry
+// (cases()) is what `tide validate` runs and what the regression tests check at low resolution.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tide/core/kernels/kernel.hpp"
+
+namespace tide::validation {
+
+/// One error metric of a run (dimensionless unless its name says otherwise).
+struct Metric {
+  std::string name;  // snake_case, also the CSV column, e.g. "velocity_l2_error"
+  double value = 0;
+};
+
+/// How a case is run: the scheme and the kernel.
+/// Schemes: "wcsph" (summation density), "wcsph_delta" (continuity density with δ-SPH diffusion).
+struct Variant {
+  std::string scheme = "wcsph";
+  KernelType kernel = KernelType::wendland_c2;
+};
+
+/// What one run of a case at one resolution produced.
+struct RunRecord {
+  std::string case_name;
+  std::string scheme;
+  std::string kernel;         // kernel_name() of the variant's kernel
+  int resolution = 0;         // particles across the case's reference length (Case::resolution_meaning)
+  std::size_t particles = 0;  // fluid particles
+  std::uint64_t steps = 0;
+  double wall_seconds = 0;      // of the time stepping alone, not set-up or metrics
+  std::vector<Metric> metrics;  // metrics[0] is the case's primary error, the one plotted
+  double particle_steps_per_second() const {
+    return wall_seconds > 0 ? static_cast<double>(particles) * static_cast<double>(steps) / wall_seconds : 0;
+  }
+};
+
+struct Case {
+  std::string name;                       // command-line name, e.g. "poiseuille"
+  std::string title;                      // e.g. "Poiseuille flow start-up"
+  std::string reference;                  // what the errors are measured against, with the citation
+  std::string resolution_meaning;         // e.g. "particles across the channel"
+  std::vector<std::string> metric_notes;  // one line per metric: name and definition
+  std::vector<int> resolutions;           // the study's default ladder (each step doubles)
+  int test_resolution = 0;                // the low resolution the regression test runs
+  std::function<RunRecord(int resolution, const Variant& variant)> run;
+};
+
+/// Every validation case, in the order the study runs and documents them.
+const std::vector<Case>& cases();
+
+/// The case called `name`, or nullptr.
+const Case* find_case(std::string_view name);
+
+/// The schemes a Variant may name.
+const std::vector<std::string>& scheme_names();
+
+}  // namespace tide::validation
