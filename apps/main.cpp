@@ -1,4 +1,4 @@
-// The `tide` command: run, check and describe TideSPH scenes.
+// The `tide` command: run, check and describe TideSPH scenes, and run the validation study.
 
 #include <CLI/CLI.hpp>
 
@@ -10,6 +10,7 @@
 #include "run_command.hpp"
 #include "tide/core/config.hpp"
 #include "tide/core/parallel.hpp"
+#include "validate_command.hpp"
 
 namespace {
 
@@ -57,6 +58,29 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "validate a scene file without running it");
   check->add_option("scene", check_file, "scene file (JSON)")->required();
 
+  tide::app::ValidateOptions validate_options;
+  CLI::App* validate = app.add_subcommand(
+      "validate", "run the validation study: cases x schemes x kernels x resolutions; CSVs, plots, docs page");
+  validate->add_option("case", validate_options.cases, "cases to run (default: all; --list names them)");
+  validate->add_option("--resolutions", validate_options.resolutions, "e.g. 20,40,80 (default: each case's ladder)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::PositiveNumber);
+  validate->add_option("--schemes", validate_options.schemes, "comma-separated (default: all; --list names them)")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  validate->add_option("--kernels", validate_options.kernels, "comma-separated (default: wendland_c2,cubic_spline)")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  validate->add_option("--out", validate_options.output_directory,
+                       "directory for results.csv, orders.csv and the plots (default: validation-results)");
+  validate->add_option("--docs", validate_options.docs_page,
+                       "also write this markdown page, its plots beside it in <page name>/ (docs/validation.md)");
+  validate->add_flag("--list", validate_options.list,
+                     "list the cases, their default resolutions, the schemes and the kernels");
+  validate->add_option("--threads", threads, "number of worker threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+
   CLI::App* info_command = app.add_subcommand("info", "version, precision, threads and build flags");
   info_command->add_option("--threads", threads, "number of worker threads")->check(CLI::PositiveNumber);
 
@@ -75,6 +99,10 @@ int main(int argc, char** argv) {
       return tide::app::run_scene(run_options);
     }
     if (*check) return tide::app::check_scene(check_file);
+    if (*validate) {
+      validate_options.command_line = tide::app::quoted_command_line(argc, argv);
+      return tide::app::validate(validate_options);
+    }
     return info();
   } catch (const std::exception& error) {
     std::cerr << "tide: error: " << error.what() << '\n';

@@ -195,8 +195,10 @@ void Wcsph<D>::set_hydrostatic_density() {
   Real top = -std::numeric_limits<Real>::max();
   for (std::size_t i = 0; i < fluid_.size(); ++i) top = std::max(top, up.dot(x[i]));
   top += static_cast<Real>(scene_.particle_spacing) / 2;
-  for_each_particle(fluid_.size(),
-                    [&](std::size_t i) { density[i] = eos_.density(eos_.rest_density() * g * (top - up.dot(x[i]))); });
+  const Real surface_pressure = eos_.pressure(eos_.rest_density());  // the background pressure
+  for_each_particle(fluid_.size(), [&](std::size_t i) {
+    density[i] = eos_.density(surface_pressure + eos_.rest_density() * g * (top - up.dot(x[i])));
+  });
 }
 
 template <int D>

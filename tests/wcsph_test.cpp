@@ -217,6 +217,18 @@ TEST(EquationOfState, TaitAndLinearMatchTheirFormulasAndInvert) {
   EXPECT_NEAR(fractional.pressure(1010), fractional_expected, tolerance * fractional_expected);
 }
 
+// A background pressure p_b shifts p(ρ) by p_b (so p(ρ0) = p_b) and is removed again by the inverse.
+TEST(EquationOfState, BackgroundPressureShiftsAndInverts) {
+  const EquationOfState tait(scene::EquationOfState::tait, 1000, 20, 7, 5000);
+  const EquationOfState plain(scene::EquationOfState::tait, 1000, 20, 7);
+  const Real tolerance = 64 * std::numeric_limits<Real>::epsilon() * 1000 * 400;
+  EXPECT_NEAR(tait.pressure(1000), 5000, tolerance);
+  for (Real rho : {Real(990), Real(1010)}) {
+    EXPECT_NEAR(tait.pressure(rho), plain.pressure(rho) + 5000, tolerance);
+    EXPECT_NEAR(tait.density(tait.pressure(rho)), rho, 64 * std::numeric_limits<Real>::epsilon() * rho);
+  }
+}
+
 TEST(TimeStep, SmallestLimitBinds) {
   TimeStepRule rule;
   rule.smoothing_length = 0.01;

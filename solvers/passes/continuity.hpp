@@ -32,6 +32,7 @@ void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D
   const Real h = kernel.smoothing_length();
   const Real diffusion = delta * h * sound_speed;
   const Real rest_density = eos.rest_density();
+  const Real rest_pressure = eos.pressure(rest_density);  // the background pressure
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Vector<D> v_i = v[i];
     const Real rho_i = density[i];
@@ -40,8 +41,9 @@ void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D
       if (j == i) return;
       const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
       sum += mass[j] * (v_i - v[j]).dot(grad_w);
+      if (diffusion == 0) return;  // δ = 0: skip the equation-of-state inversion per pair
       const Real rho_j = density[j];
-      const Real hydrostatic = eos.density(-rest_density * gravity.dot(x_ij)) - rest_density;
+      const Real hydrostatic = eos.density(rest_pressure - rest_density * gravity.dot(x_ij)) - rest_density;
       sum += diffusion * 2 * (rho_j - rho_i - hydrostatic) * (-x_ij.dot(grad_w)) / (r2 + Real(0.01) * h * h) *
              (mass[j] / rho_j);
     });
