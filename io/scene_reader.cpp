@@ -120,14 +120,23 @@ std::string pointer_token(std::string_view key) {
 /// nlohmann::json keeps only the last of two equal keys in an object, without a word. In a scene
 /// that is an editing mistake (two "solver" blocks, one of them ignored), so the parser's
 /// callback refuses it. It follows the path of the value being read, for the message.
+/// It also refuses nesting deeper than max_nesting: a scene needs 6 levels, and describing a
+/// value nested thousands deep in a message (json::dump recurses) would overflow the stack.
 class DuplicateKeyGuard {
  public:
+  static constexpr std::size_t max_nesting = 64;
+
   explicit DuplicateKeyGuard(const std::string& file) : file_(file) {}
 
   void on_event(json::parse_event_t event, const json& parsed) {
     switch (event) {
       case json::parse_event_t::object_start:
       case json::parse_event_t::array_start:
+        if (open_.size() == max_nesting) {
+          throw SceneError(file_, current_path(),
+                           "at most " + std::to_string(max_nesting) + " levels of nested arrays and objects",
+                           "deeper nesting");
+        }
         open_.emplace_back();
         open_.back().is_array = event == json::parse_event_t::array_start;
         break;
@@ -282,23 +291,25 @@ Vec default_gravity(int dimension) {
 
 // The solver places particles at anchor + (k + 1/2)·spacing on every axis (see
 // solvers/particle_sampling.hpp); a fluid block holding none of those points would be silently
-// empty, so the reader finds one.
+// empty, so the reader finds one. The loops try three steps from the point just below `lower`
+// instead of stepping k: 2^53 spacings or more from the anchor, k + 1 == k and they would not end.
 
 bool axis_holds_lattice_point(double anchor, double spacing, double lower, double upper) {
   const double first = std::floor((lower - anchor) / spacing - 0.5);
-  for (double k = first; k <= first + 2; ++k) {
-    const double point = anchor + (k + 0.5) * spacing;
+  for (int step = 0; step <= 2; ++step) {
+    const double point = anchor + (first + step + 0.5) * spacing;
     if (point >= lower && point < upper) return true;
   }
   return false;
 }
 
+/// For a range [lower, upper) at most two spacings wide.
 std::vector<double> lattice_points_between(double anchor, double spacing, double lower, double upper) {
   std::vector<double> points;
   const double first = std::floor((lower - anchor) / spacing - 0.5);
-  for (double k = first; anchor + (k + 0.5) * spacing < upper; ++k) {
-    const double point = anchor + (k + 0.5) * spacing;
-    if (point >= lower) points.push_back(point);
+  for (int step = 0; step <= 2; ++step) {
+    const double point = anchor + (first + step + 0.5) * spacing;
+    if (point >= lower && point < upper) points.push_back(point);
   }
   return points;
 }
@@ -528,7 +539,13 @@ class SceneParser {
   void read_kernel(const Node& node, scene::Scene& scene) const {
     expect_object(node, {"type", "smoothing_ratio"});
     if (const Node type = child(node, "type"); type.present()) scene.kernel = kernel_type(type);
-    read_optional(node, "smoothing_ratio", scene.smoothing_ratio, positive);
+    // The wall layers this ratio needs, ceil(support / spacing), are counted in an int.
+    const double support = static_cast<double>(kernel_support_factor(scene.kernel));
+    const double most_layers = std::numeric_limits<int>::max();
+    if (const Node ratio = child(node, "smoothing_ratio"); ratio.present()) {
+      scene.smoothing_ratio = number(ratio, "a number > 0 and < " + format_number(most_layers / support),
+                                     [&](double x) { return x > 0 && support * x < most_layers; });
+    }
   }
 
   std::vector<scene::Material> read_materials(const Node& node) const {
