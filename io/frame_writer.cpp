@@ -422,41 +422,86 @@ std::vector<std::string> attribute_names(const CheckedCalls& h5, hid_t object, s
   return names;
 }
 
+/// What an HDF5 object is, for messages.
+std::string kind_name(H5I_type_t type) {
+  switch (type) {
+    case H5I_GROUP:
+      return "a group";
+    case H5I_DATASET:
+      return "a dataset";
+    case H5I_DATATYPE:
+      return "a named datatype";
+    default:
+      return "another kind of object";
+  }
+}
+
+/// `object` (described by `what`, e.g. "dataset 'density' of /frame_000012") is of `expected` kind.
+void expect_kind(const CheckedCalls& h5, const Handle& object, H5I_type_t expected, const std::string& what) {
+  const H5I_type_t found = H5Iget_type(object.get());
+  if (found != expected)
+    throw_layout_error(h5.file, what + ": expected " + kind_name(expected) + ", found " + kind_name(found));
+}
+
+/// Elements in an attribute: 1 for a scalar one. H5Aread writes them all, so readers with room for
+/// one value check this first.
+hssize_t element_count(const CheckedCalls& h5, hid_t attribute, const std::string& what) {
+  const Handle space = h5.own(H5Aget_space(attribute), H5Sclose, "cannot read the shape of " + what);
+  return H5Sget_simple_extent_npoints(space.get());
+}
+
 template <class T>
-T read_number_attribute(const CheckedCalls& h5, hid_t group, const std::string& group_name, const char* name,
+T read_number_attribute(const CheckedCalls& h5, hid_t group, const std::string& group_path, const std::string& name,
                         hid_t memory_type) {
-  if (H5Aexists(group, name) <= 0)
-    throw_layout_error(h5.file, "group " + group_name + " has no '" + name + "' attribute");
-  const Handle attribute =
-      h5.own(H5Aopen(group, name, H5P_DEFAULT), H5Aclose, std::string("cannot open attribute ") + name);
+  if (H5Aexists(group, name.c_str()) <= 0)
+    throw_layout_error(h5.file, "group " + group_path + " has no '" + name + "' attribute");
+  const std::string what = "attribute '" + name + "' of " + group_path;
+  const Handle attribute = h5.own(H5Aopen(group, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open " + what);
+  const Handle type = h5.own(H5Aget_type(attribute.get()), H5Tclose, "cannot read the type of " + what);
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  if ((type_class != H5T_INTEGER && type_class != H5T_FLOAT) || element_count(h5, attribute.get(), what) != 1)
+    throw_layout_error(h5.file, what + ": expected one number (a scalar integer or floating-point attribute)");
   T value{};
-  h5.check(H5Aread(attribute.get(), memory_type, &value), std::string("cannot read attribute ") + name);
+  h5.check(H5Aread(attribute.get(), memory_type, &value), "cannot read " + what);
   return value;
 }
 
-std::string read_string_attribute(const CheckedCalls& h5, hid_t group, const std::string& name) {
-  const Handle attribute = h5.own(H5Aopen(group, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open attribute " + name);
-  const Handle type = h5.own(H5Aget_type(attribute.get()), H5Tclose, "cannot read the type of attribute " + name);
-  if (H5Tget_class(type.get()) != H5T_STRING || H5Tis_variable_str(type.get()) != 0)
-    throw_layout_error(h5.file, "attribute '" + name + "' is not a fixed-length string");
+std::string read_string_attribute(const CheckedCalls& h5, hid_t group, const std::string& group_path,
+                                  const std::string& name) {
+  const std::string what = "attribute '" + name + "' of " + group_path;
+  const Handle attribute = h5.own(H5Aopen(group, name.c_str(), H5P_DEFAULT), H5Aclose, "cannot open " + what);
+  const Handle type = h5.own(H5Aget_type(attribute.get()), H5Tclose, "cannot read the type of " + what);
+  const bool fixed_length_string = H5Tget_class(type.get()) == H5T_STRING && H5Tis_variable_str(type.get()) == 0;
+  if (!fixed_length_string || element_count(h5, attribute.get(), what) != 1)
+    throw_layout_error(h5.file, what + ": expected one fixed-length string");
   std::string value(H5Tget_size(type.get()), '\0');
-  h5.check(H5Aread(attribute.get(), type.get(), value.data()), "cannot read attribute " + name);
+  h5.check(H5Aread(attribute.get(), type.get(), value.data()), "cannot read " + what);
   value.erase(std::find(value.begin(), value.end(), '\0'), value.end());
   return value;
 }
 
-FrameDataset read_dataset(const CheckedCalls& h5, hid_t group, const std::string& name) {
-  const Handle dataset = h5.own(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose, "cannot open dataset " + name);
-  const Handle space = h5.own(H5Dget_space(dataset.get()), H5Sclose, "cannot read the shape of dataset " + name);
-  const Handle type = h5.own(H5Dget_type(dataset.get()), H5Tclose, "cannot read the type of dataset " + name);
+/// "(8, 2)".
+std::string shape_text(const std::vector<std::size_t>& shape) {
+  std::string text = "(";
+  for (std::size_t k = 0; k < shape.size(); ++k) text += (k > 0 ? ", " : "") + std::to_string(shape[k]);
+  return text + ")";
+}
+
+FrameDataset read_dataset(const CheckedCalls& h5, hid_t group, const std::string& group_path, const std::string& name) {
+  const std::string what = "dataset '" + name + "' of " + group_path;
+  const Handle dataset = h5.own(H5Oopen(group, name.c_str(), H5P_DEFAULT), H5Oclose, "cannot open " + what);
+  expect_kind(h5, dataset, H5I_DATASET, what);
+  const Handle space = h5.own(H5Dget_space(dataset.get()), H5Sclose, "cannot read the shape of " + what);
+  const Handle type = h5.own(H5Dget_type(dataset.get()), H5Tclose, "cannot read the type of " + what);
   const int rank = H5Sget_simple_extent_ndims(space.get());
-  if (rank != 1 && rank != 2) throw_layout_error(h5.file, "dataset '" + name + "' is not one- or two-dimensional");
+  if (rank != 1 && rank != 2)
+    throw_layout_error(h5.file, what + ": expected shape (N) or (N, D), found " + std::to_string(rank) + " dimensions");
   const H5T_class_t type_class = H5Tget_class(type.get());
   if (type_class != H5T_FLOAT && type_class != H5T_INTEGER)
-    throw_layout_error(h5.file, "dataset '" + name + "' does not hold numbers");
+    throw_layout_error(h5.file, what + ": expected numbers (an integer or floating-point type)");
 
   hsize_t dims[2] = {0, 0};
-  h5.check(H5Sget_simple_extent_dims(space.get(), dims, nullptr), "cannot read the shape of dataset " + name);
+  h5.check(H5Sget_simple_extent_dims(space.get(), dims, nullptr), "cannot read the shape of " + what);
   FrameDataset result;
   result.shape.assign(dims, dims + rank);
   // A damaged header can claim any shape: refuse one that the stored bytes cannot hold before
@@ -467,13 +512,32 @@ FrameDataset read_dataset(const CheckedCalls& h5, hid_t group, const std::string
   std::size_t value_count = 1;
   for (const std::size_t extent : result.shape) {
     if (extent != 0 && value_count > stored_values / extent)
-      throw_layout_error(h5.file, "dataset '" + name + "' claims more values than it stores");
+      throw_layout_error(h5.file, what + " claims more values than it stores");
     value_count *= extent;
   }
   result.values.resize(value_count);
   h5.check(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, space.get(), space.get(), H5P_DEFAULT, result.values.data()),
-           "cannot read dataset " + name);
+           "cannot read " + what);
   return result;
+}
+
+/// Particle i is row i of every dataset, and a vector field has as many columns as "position",
+/// which is (N, 2) or (N, 3) (docs/output.md).
+void check_shapes(const fs::path& file, const std::string& group_path,
+                  const std::map<std::string, FrameDataset>& datasets) {
+  const auto position = datasets.find("position");
+  if (position == datasets.end())
+    throw_layout_error(file, "expected a dataset 'position' in " + group_path + ", found none");
+  const std::vector<std::size_t>& shape = position->second.shape;
+  if (shape.size() != 2 || shape[1] < 2 || shape[1] > 3)
+    throw_layout_error(
+        file, "dataset 'position' of " + group_path + ": expected shape (N, 2) or (N, 3), found " + shape_text(shape));
+  for (const auto& [name, dataset] : datasets) {
+    if (dataset.shape[0] != shape[0] || (dataset.shape.size() == 2 && dataset.shape[1] != shape[1]))
+      throw_layout_error(file, "dataset '" + name + "' of " + group_path + ": expected shape " +
+                                   shape_text({shape[0]}) + " or " + shape_text(shape) +
+                                   " (rows and columns as in 'position'), found " + shape_text(dataset.shape));
+  }
 }
 
 }  // namespace
@@ -492,13 +556,16 @@ Frame read_frame(const fs::path& path) {
   frame.group = groups.front();
   const std::string group_path = "/" + frame.group;
   const Handle group =
-      h5.own(H5Gopen2(file.get(), frame.group.c_str(), H5P_DEFAULT), H5Gclose, "cannot open group " + group_path);
+      h5.own(H5Oopen(file.get(), frame.group.c_str(), H5P_DEFAULT), H5Oclose, "cannot open " + group_path);
+  expect_kind(h5, group, H5I_GROUP, group_path);
   frame.time = read_number_attribute<double>(h5, group.get(), group_path, "time", H5T_NATIVE_DOUBLE);
   frame.step = read_number_attribute<std::uint64_t>(h5, group.get(), group_path, "step", H5T_NATIVE_UINT64);
   for (const std::string& name : attribute_names(h5, group.get(), group_path))
-    if (name != "time" && name != "step") frame.attributes[name] = read_string_attribute(h5, group.get(), name);
+    if (name != "time" && name != "step")
+      frame.attributes[name] = read_string_attribute(h5, group.get(), group_path, name);
   for (const std::string& name : link_names(h5, group.get(), group_path))
-    frame.datasets[name] = read_dataset(h5, group.get(), name);
+    frame.datasets[name] = read_dataset(h5, group.get(), group_path, name);
+  check_shapes(path, group_path, frame.datasets);
   return frame;
 }
 

@@ -29,7 +29,10 @@ struct Frame {
 };
 
 /// Reads one frame file as FrameWriter writes it (for tests and tools). A missing, truncated or
-/// foreign file gives a std::runtime_error that names the file and what failed.
+/// foreign file, or one not laid out as docs/output.md describes (no single frame group, no scalar
+/// numeric "time" and "step", another attribute that is not one string, no "position" (N, 2|3), a
+/// dataset that is not numbers of shape (N) or (N, D)), gives a std::runtime_error that names the
+/// file and what was expected. HDF5 prints nothing.
 Frame read_frame(const std::filesystem::path& path);
 
 /// Writes a run's output for ParaView: one HDF5 file per frame and an XDMF file that names them.
