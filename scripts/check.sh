@@ -5,8 +5,11 @@
 #   2. builds and runs the tests in single precision (build-float/);
 #   3. installs the double build and builds + runs examples/embed against the installed package;
 #   4. builds the unit tests with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)
-#      and runs them.
-# Stops at the first failure. JOBS (default: nproc) sets the build and test parallelism.
+#      and runs them;
+#   5. builds the scene-parser fuzzer with clang + ASan + UBSan (build-fuzz/) and fuzzes for 60 s
+#      (docs/stability.md, "Bad input").
+# Stops at the first failure. JOBS (default: nproc) sets the build and test parallelism;
+# FUZZ_SECONDS (default: 60) how long the fuzzer runs.
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -60,5 +63,30 @@ section "AddressSanitizer + UndefinedBehaviorSanitizer: unit tests"
 ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=1:strict_init_order=1}" \
   UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}" \
   ctest --test-dir build-asan --output-on-failure --no-tests=error -j "$jobs" -L unit
+
+section "libFuzzer, clang + AddressSanitizer + UndefinedBehaviorSanitizer: configure and build (build-fuzz/)"
+cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DTIDE_BUILD_FUZZERS=ON -DTIDE_SANITIZE=address,undefined -DTIDE_WERROR=ON \
+  -DTIDE_BUILD_TESTS=OFF -DTIDE_BUILD_BENCH=OFF -DTIDE_BUILD_APPS=OFF
+cmake --build build-fuzz -j "$jobs" --target scene_parser_fuzzer
+
+fuzz_seconds="${FUZZ_SECONDS:-60}"
+section "libFuzzer: the scene parser for ${fuzz_seconds} s"
+# The fuzzer adds what it learns to the corpus it is given: give it a copy. A failing input is
+# kept in build-fuzz/check-findings/ and printed as Base64, for fuzz/regressions/.
+findings=build-fuzz/check-findings
+rm -rf "$findings" && mkdir -p "$findings" "$scratch/corpus"
+cp scenes/*.json fuzz/corpus/* "$scratch/corpus/"
+if ! build-fuzz/fuzz/scene_parser_fuzzer -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 \
+  -max_len=4096 -dict=fuzz/scene.dict -artifact_prefix="$findings/" -print_final_stats=1 \
+  "$scratch/corpus" >"$scratch/fuzz.log" 2>&1; then
+  tail -n 80 "$scratch/fuzz.log"
+  for input in "$findings"/*; do
+    [[ -f "$input" ]] && printf '%s, as Base64:\n%s\n' "$input" "$(base64 -w 0 "$input")"
+  done
+  echo "check: the scene-parser fuzzer found an input that crashes, hangs or trips a sanitizer" >&2
+  exit 1
+fi
+grep -E '^(Done|stat::number_of_executed_units|stat::peak_rss_mb)' "$scratch/fuzz.log"
 
 section "All checks passed"

@@ -10,7 +10,7 @@ packages=(
   libcli11-dev                   # apps: the tide command line
   libgtest-dev libbenchmark-dev  # tests/, bench/
   clang clang-format             # second compiler, formatting
-  libclang-rt-14-dev             # sanitizer runtimes for clang
+  libclang-rt-14-dev             # sanitizer runtimes and libFuzzer for clang
   gnuplot-nox                    # plots of benchmark and validation results
 )
 
