@@ -6,10 +6,13 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "tide/io/frame_writer.hpp"
 
@@ -173,6 +176,45 @@ TEST_F(TideCommand, InfoNamesVersionAndPrecision) {
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_NE(result.output.find("precision"), std::string::npos);
   EXPECT_NE(result.output.find("threads"), std::string::npos);
+}
+
+TEST_F(TideCommand, ValidateRefusesUnknownNamesListingTheValidOnes) {
+  for (const auto& [arguments, listed] : {std::pair<std::string, std::string>{"validate no_such_case", "poiseuille"},
+                                          {"validate couette --schemes sph", "wcsph_continuity"},
+                                          {"validate couette --kernels gauss", "wendland_c2"}}) {
+    const CommandResult result = run_tide(arguments);
+    EXPECT_EQ(result.exit_code, 2) << arguments << result.output;
+    EXPECT_NE(result.output.find("unknown"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(listed), std::string::npos) << result.output;
+  }
+}
+
+// One cheap case end to end: the CSV has the run's row with its error metric, and the error is
+// the Couette case's (measured 0.0105 at 10 particles across; its threshold in
+// validation_cases_test is 0.014).
+TEST_F(TideCommand, ValidateWritesResultsAndPlot) {
+  const fs::path out = directory_ / "study";
+  const CommandResult result =
+      run_tide("validate couette --resolutions 10 --schemes wcsph --kernels wendland_c2 --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream csv(out / "results.csv");
+  std::string header, row;
+  ASSERT_TRUE(std::getline(csv, header) && std::getline(csv, row)) << result.output;
+  EXPECT_EQ(header.rfind("case,scheme,kernel,resolution,particles,steps,wall_seconds", 0), 0u) << header;
+  EXPECT_NE(header.find("velocity_l2_error"), std::string::npos) << header;
+  EXPECT_EQ(row.rfind("couette,wcsph,wendland_c2,10,", 0), 0u) << row;
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> fields;
+    std::istringstream stream(line);
+    for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
+    return fields;
+  };
+  const auto names = cells(header);
+  const auto values = cells(row);
+  const auto column = std::find(names.begin(), names.end(), "velocity_l2_error") - names.begin();
+  ASSERT_LT(static_cast<std::size_t>(column), values.size()) << row;
+  EXPECT_LT(std::stod(values[static_cast<std::size_t>(column)]), 0.014) << row;
+  EXPECT_GT(fs::file_size(out / "couette.png"), 0u);
 }
 
 }  // namespace
