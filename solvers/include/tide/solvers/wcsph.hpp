@@ -23,7 +23,9 @@ struct FluidFields {
   ScalarField mass;
   ScalarField density;
   ScalarField pressure;
-  ScalarField density_rate;  // only with continuity density (slot unused otherwise)
+  ScalarField density_rate;         // only with continuity density (slot unused otherwise)
+  VectorField shift;                // only with particle shifting (slot unused otherwise)
+  ScalarField position_divergence;  // only with particle shifting: ∇·r, the free-surface marker
 };
 
 /// Handles of the wall-particle fields (Adami, Hu & Adams 2012).
@@ -44,7 +46,8 @@ struct PassTimes {
   double wall_state = 0;       // wall pressure, density and velocity extrapolation
   double momentum = 0;         // pressure, viscous and body forces
   double integration = 0;      // kicks, drift, stability check and reductions
-  double total() const { return neighbor_search + density + wall_state + momentum + integration; }
+  double shifting = 0;         // particle shifting (zero when off)
+  double total() const { return neighbor_search + density + wall_state + momentum + integration + shifting; }
 };
 
 /// What one step did.
@@ -87,6 +90,7 @@ class Wcsph {
   void set_hydrostatic_density();
   void compute_interactions(const Vector<D>& gravity);
   void compute_density_rate(const Vector<D>& gravity);
+  void shift_particles(Real dt);
   void check_state();
 
   scene::Scene scene_;
