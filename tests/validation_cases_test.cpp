@@ -75,5 +75,15 @@ TEST(ValidationCases, LidDrivenCavityRe100) {
   EXPECT_LT(metric(r, "u_min_error"), 0.095);
 }
 
+// 25 particles across, t = 30: u RMS error 0.120 U, v 0.126 U, vortex minimum 42% weak — far from
+// resolved (50 particles: 0.055, 0.067, 17%; the 50-particle run takes minutes), so this guards the
+// set-up, not the accuracy. Margin as above: twice the last unit's change (0.0067 U).
+TEST(ValidationCases, LidDrivenCavityRe1000) {
+  const RunRecord r = run_at_test_resolution("cavity_re1000");
+  EXPECT_LT(metric(r, "u_centreline_rms_error"), 0.135);
+  EXPECT_LT(metric(r, "v_centreline_rms_error"), 0.14);
+  EXPECT_LT(metric(r, "u_min_error"), 0.46);
+}
+
 }  // namespace
 }  // namespace tide::validation
