@@ -78,6 +78,7 @@ class Wcsph {
   const EquationOfState& equation_of_state() const { return eos_; }
   const NeighborGrid<D>& fluid_grid() const { return neighbors_.fluid_grid(); }
   Real smoothing_length() const { return smoothing_length_; }
+  const AnyKernel<D>& kernel() const { return kernel_; }
   Real max_speed() const { return max_speed_; }
   std::size_t removed_total() const { return neighbors_.fluid_grid().removed_total(); }
   const PassTimes& pass_times() const { return pass_times_; }
