@@ -74,5 +74,7 @@ Case poiseuille_case();
 Case couette_case();
 Case taylor_green_case();
 Case dam_break_2d_case();
+Case dam_break_buchner_case();
+Case dam_break_3d_case();
 
 }  // namespace tide::validation
