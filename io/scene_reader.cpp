@@ -267,6 +267,8 @@ constexpr std::array<Named<scene::DensityMethod>, 2> density_method_names{
     {{"summation", scene::DensityMethod::summation}, {"continuity", scene::DensityMethod::continuity}}};
 constexpr std::array<Named<scene::ViscosityModel>, 2> viscosity_model_names{
     {{"artificial", scene::ViscosityModel::artificial}, {"laminar", scene::ViscosityModel::laminar}}};
+constexpr std::array<Named<scene::Shifting>, 2> shifting_names{
+    {{"none", scene::Shifting::none}, {"fickian", scene::Shifting::fickian}}};
 constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
     {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
 constexpr std::array<Named<scene::ProbeType>, 2> probe_type_names{
@@ -681,7 +683,7 @@ class SceneParser {
   void read_solver(const Node& node, scene::Solver& solver) const {
     expect_object(node, {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha",
                          "beta", "cfl", "viscous_number", "force_number", "max_density_ratio",
-                         "clamp_negative_pressure", "gravity_ramp_time", "background_pressure"});
+                         "clamp_negative_pressure", "gravity_ramp_time", "background_pressure", "shifting"});
     read_optional(node, "scheme", solver.scheme, scheme_names);
     read_optional(node, "equation_of_state", solver.equation_of_state, equation_of_state_names);
     read_optional(node, "tait_exponent", solver.tait_exponent, positive);
@@ -699,6 +701,7 @@ class SceneParser {
     }
     read_optional(node, "gravity_ramp_time", solver.gravity_ramp_time, non_negative);
     read_optional(node, "background_pressure", solver.background_pressure, non_negative);
+    read_optional(node, "shifting", solver.shifting, shifting_names);
   }
 
   scene::Time read_time(const Node& node) const {

@@ -12,6 +12,7 @@
 #include "passes/continuity.hpp"
 #include "passes/density_summation.hpp"
 #include "passes/momentum.hpp"
+#include "passes/particle_shifting.hpp"
 #include "passes/wall_state.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/instability.hpp"
@@ -135,9 +136,19 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
       std::visit([&](const auto& kernel) { return lattice_kernel_sum<D>(kernel, scene); }, kernel_);
 
   fluid_ = make_particles<D>(sample_fluid<D>(scene), particle_mass, "velocity");
-  fluid_fields_ = {fluid_.position(),     fluid_.vector("velocity"),    fluid_.add_vector("acceleration"),
-                   fluid_.scalar("mass"), fluid_.add_scalar("density"), fluid_.add_scalar("pressure"),
+  fluid_fields_ = {fluid_.position(),
+                   fluid_.vector("velocity"),
+                   fluid_.add_vector("acceleration"),
+                   fluid_.scalar("mass"),
+                   fluid_.add_scalar("density"),
+                   fluid_.add_scalar("pressure"),
+                   ScalarField{},
+                   VectorField{},
                    ScalarField{}};
+  if (scene.solver.shifting != scene::Shifting::none) {
+    fluid_fields_.shift = fluid_.add_vector("shift");
+    fluid_fields_.position_divergence = fluid_.add_scalar("position_divergence");
+  }
   if (scene.solver.density == scene::DensityMethod::continuity) {
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
     set_hydrostatic_density();
@@ -291,7 +302,30 @@ StepReport Wcsph<D>::step() {
   ++step_count_;
   check_state();
   lap(clock, pass_times_.integration);
+  if (scene_.solver.shifting != scene::Shifting::none) {
+    shift_particles(dt);
+    lap(clock, pass_times_.shifting);
+  }
   return report;
+}
+
+template <int D>
+void Wcsph<D>::shift_particles(Real dt) {
+  const Real spacing = static_cast<Real>(scene_.particle_spacing);
+  std::visit(
+      [&](const auto& kernel) {
+        const passes::ShiftingSettings settings{4 * smoothing_length_ * max_speed_ * dt, kernel.value(spacing),
+                                                Real(D) - Real(0.5), Real(D) / 2};
+        passes::position_divergence<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
+                                       fluid_[fluid_fields_.position_divergence]);
+        passes::particle_shifting<D>(kernel, settings, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
+                                     std::as_const(fluid_)[fluid_fields_.position_divergence],
+                                     fluid_[fluid_fields_.shift]);
+      },
+      kernel_);
+  auto x = fluid_[fluid_fields_.position];
+  const auto shift = std::as_const(fluid_)[fluid_fields_.shift];
+  for_each_particle(fluid_.size(), [&](std::size_t i) { x.set(i, x[i] + shift[i]); });
 }
 
 template <int D>

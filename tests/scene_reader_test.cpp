@@ -268,6 +268,7 @@ TEST(SceneReader, ReadsWallAndFluidVelocities) {
   document = with(document, "/fluid/0/velocity", {{"taylor_green", {{"amplitude", 2}}}});
   document = with(document, "/fluid/1/velocity", {0, -1});
   document = with(document, "/solver/background_pressure", 50);
+  document = with(document, "/solver/shifting", "fickian");
   const scene::Scene s = parse(document);
   EXPECT_EQ(s.walls.obstacles[0].velocity, vec(1.5, 0));
   EXPECT_EQ(s.walls.obstacles[1].velocity, vec(0, 0));
@@ -276,6 +277,7 @@ TEST(SceneReader, ReadsWallAndFluidVelocities) {
   EXPECT_EQ(vortex.length, 1);
   EXPECT_EQ(std::get<scene::Vec>(s.fluid[1].velocity), vec(0, -1));
   EXPECT_EQ(s.solver.background_pressure, 50);
+  EXPECT_EQ(s.solver.shifting, scene::Shifting::fickian);
 }
 
 TEST(SceneReaderRefuses, MalformedVelocities) {
@@ -432,6 +434,7 @@ TEST(SceneReaderRefuses, UnknownNamesListingTheValidOnes) {
                  R"(one of "tait", "linear")");
   expect_refused(with(full_2d_scene(), "/solver/density", "sum"), "/solver/density",
                  R"(one of "summation", "continuity")");
+  expect_refused(with(full_2d_scene(), "/solver/shifting", "on"), "/solver/shifting", R"(one of "none", "fickian")");
   expect_refused(with(full_2d_scene(), "/solver/viscosity", "none"), "/solver/viscosity",
                  R"(one of "artificial", "laminar")");
   expect_refused(with(full_2d_scene(), "/walls/slip", "slip"), "/walls/slip", R"(one of "no_slip", "free_slip")");

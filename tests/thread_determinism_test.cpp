@@ -57,7 +57,7 @@ TEST(ThreadDeterminism, KernelSumPassAndReductionAreBitwiseIdentical) {
 // A small 2D dam break, 100 steps: the whole WCSPH pipeline (sort, density, walls, momentum,
 // reductions for the time step) must give the same particle state, and its probes the same
 // readings, for any thread count.
-std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod density) {
+std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod density, scene::Shifting shifting) {
   const ThreadLimit limit(threads);
   scene::Scene s;
   s.source = "thread determinism";
@@ -68,6 +68,7 @@ std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod 
   s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {0.6, 0.5, 0}}, true};
   s.domain.box = {{-0.03, -0.03, 0}, {0.63, 1.0, 0}};
   s.solver.density = density;
+  s.solver.shifting = shifting;
   Wcsph<2> simulation(s);
   for (int k = 0; k < 100; ++k) simulation.step();
   const auto& fluid = simulation.fluid();
@@ -91,9 +92,11 @@ std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod 
 
 TEST(ThreadDeterminism, WcsphStateAfter100StepsIsBitwiseIdentical) {
   for (auto density : {scene::DensityMethod::summation, scene::DensityMethod::continuity}) {
-    const auto one = wcsph_state_after_100_steps(1, density);
-    const auto two = wcsph_state_after_100_steps(2, density);
-    EXPECT_TRUE(same_bytes(one, two));
+    for (auto shifting : {scene::Shifting::none, scene::Shifting::fickian}) {
+      const auto one = wcsph_state_after_100_steps(1, density, shifting);
+      const auto two = wcsph_state_after_100_steps(2, density, shifting);
+      EXPECT_TRUE(same_bytes(one, two));
+    }
   }
 }
 

@@ -1,6 +1,7 @@
 #include "case_support.hpp"
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -50,5 +51,31 @@ Curve read_reference(const std::string& file, int x_column, int y_column) {
   if (curve.x.empty()) throw std::runtime_error(path + ": no data rows");
   return curve;
 }
+
+template <int D>
+Vector<D> shepard_velocity(const Wcsph<D>& simulation, const Vector<D>& point) {
+  const auto& fluid = simulation.fluid();
+  const auto& f = simulation.fluid_fields();
+  const auto x = fluid[f.position];
+  const auto v = fluid[f.velocity];
+  const auto mass = fluid[f.mass];
+  const auto density = fluid[f.density];
+  Vector<D> weighted = Vector<D>::Zero();
+  Real weight_sum = 0;
+  std::visit(
+      [&](const auto& kernel) {
+        simulation.fluid_grid().for_each_neighbor_of(point, x, [&](Index j, const Vector<D>&, Real r2) {
+          const Real weight = mass[j] / density[j] * kernel.value(std::sqrt(r2));
+          weighted += weight * v[j];
+          weight_sum += weight;
+        });
+      },
+      simulation.kernel());
+  if (!(weight_sum > 0)) return Vector<D>::Constant(std::numeric_limits<Real>::quiet_NaN());
+  return weighted / weight_sum;
+}
+
+template Vector<2> shepard_velocity<2>(const Wcsph<2>&, const Vector<2>&);
+template Vector<3> shepard_velocity<3>(const Wcsph<3>&, const Vector<3>&);
 
 }  // namespace tide::validation

@@ -23,13 +23,16 @@ scene::Scene vortex_scene(int cells, const Variant& variant) {
   s.fluid.push_back({0, scene::Box{{0, 0, 0}, {1, 1, 0}}, scene::TaylorGreenVelocity{1, 1}});
   apply_variant(s, variant);
   s.walls.layers = 0;
+  s.gravity = {0, 0, 0};
   s.domain.box = {{0, 0, 0}, {1, 1, 0}};
   s.domain.periodic = {true, true, false};
   s.solver.viscosity = scene::ViscosityModel::laminar;
   s.solver.clamp_negative_pressure = false;
-  // The vortex's own pressure swings by ±ρ0U²/2; a background pressure of ρ0 c0² keeps every
-  // pressure positive, away from the tensile instability (Adami, Hu & Adams 2013).
-  s.solver.background_pressure = 100;
+  // Without shifting the particles drift into the vortex's stagnation lines and the pressure
+  // noise takes the flow's energy (the error exceeds 90% at t = 1 for every resolution; a
+  // background pressure only adds noise to the pressure force). Fickian particle shifting keeps
+  // the distribution uniform (Lind et al. 2012; Sun et al. 2017 run this vortex with shifting).
+  s.solver.shifting = scene::Shifting::fickian;
   return s;
 }
 

@@ -116,6 +116,7 @@ enum class Scheme { wcsph };
 enum class EquationOfState { tait, linear };
 enum class DensityMethod { summation, continuity };
 enum class ViscosityModel { artificial, laminar };
+enum class Shifting { none, fickian };
 
 struct Solver {
   Scheme scheme = Scheme::wcsph;
@@ -133,6 +134,7 @@ struct Solver {
   bool clamp_negative_pressure = true;  // p = max(p, 0): free-surface flows without tension
   double gravity_ramp_time = 0;         // s: gravity rises smoothly from 0 over this time (0: at once)
   double background_pressure = 0;       // Pa, added to the equation of state (closed or periodic flows)
+  Shifting shifting = Shifting::none;   // particle shifting after each step (Lind et al. 2012)
 };
 
 struct Time {

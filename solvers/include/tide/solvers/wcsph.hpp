@@ -23,7 +23,9 @@ struct FluidFields {
   ScalarField mass;
   ScalarField density;
   ScalarField pressure;
-  ScalarField density_rate;  // only with continuity density (slot unused otherwise)
+  ScalarField density_rate;         // only with continuity density (slot unused otherwise)
+  VectorField shift;                // only with particle shifting (slot unused otherwise)
+  ScalarField position_divergence;  // only with particle shifting: ∇·r, the free-surface marker
 };
 
 /// Handles of the wall-particle fields (Adami, Hu & Adams 2012).
@@ -44,7 +46,8 @@ struct PassTimes {
   double wall_state = 0;       // wall pressure, density and velocity extrapolation
   double momentum = 0;         // pressure, viscous and body forces
   double integration = 0;      // kicks, drift, stability check and reductions
-  double total() const { return neighbor_search + density + wall_state + momentum + integration; }
+  double shifting = 0;         // particle shifting (zero when off)
+  double total() const { return neighbor_search + density + wall_state + momentum + integration + shifting; }
 };
 
 /// What one step did.
@@ -75,12 +78,12 @@ class Wcsph {
   const FluidFields<D>& fluid_fields() const { return fluid_fields_; }
   const WallFields<D>& wall_fields() const { return wall_fields_; }
   const EquationOfState& equation_of_state() const { return eos_; }
-  const AnyKernel<D>& kernel() const { return kernel_; }
   /// Gravity now: the scene's, or less while it is being raised (solver.gravity_ramp_time).
   Vector<D> gravity() const { return gravity_at(time_); }
   const NeighborGrid<D>& fluid_grid() const { return neighbors_.fluid_grid(); }
   const NeighborGrid<D>& wall_grid() const { return neighbors_.wall_grid(); }
   Real smoothing_length() const { return smoothing_length_; }
+  const AnyKernel<D>& kernel() const { return kernel_; }
   Real max_speed() const { return max_speed_; }
   std::size_t removed_total() const { return neighbors_.fluid_grid().removed_total(); }
   const PassTimes& pass_times() const { return pass_times_; }
@@ -93,6 +96,7 @@ class Wcsph {
   void set_hydrostatic_density();
   void compute_interactions(const Vector<D>& gravity);
   void compute_density_rate(const Vector<D>& gravity);
+  void shift_particles(Real dt);
   void check_state();
 
   scene::Scene scene_;

@@ -1,0 +1,112 @@
+#pragma once
+
+// Fickian particle shifting: small position corrections down the gradient of particle
+// concentration that keep the distribution uniform, projected at a free surface so that the
+// surface does not diffuse.
+
+#include <cmath>
+#include <span>
+
+#include "tide/core/parallel.hpp"
+#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/wcsph.hpp"
+
+namespace tide::passes {
+
+struct ShiftingSettings {
+  Real diffusion = 0;            // D = 4 h |v|max Δt, the shift per unit concentration gradient
+  Real lattice_kernel = 0;       // W(Δx), the kernel at one particle spacing
+  Real surface_divergence = 0;   // ∇·r below this: a free-surface particle
+  Real isolated_divergence = 0;  // ∇·r below this: a splash particle (not shifted)
+};
+
+namespace detail {
+
+/// Calls add(V_j, x_ij, r²) for every fluid (j ≠ i) and wall neighbour of fluid particle i.
+template <int D, class Add>
+void for_each_volume_neighbor(std::size_t i, const ParticleSet<D>& fluid, const FluidFields<D>& f,
+                              const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
+                              const WallFields<D>& w, Add&& add) {
+  const auto x = fluid[f.position];
+  const auto mass = fluid[f.mass];
+  const auto density = fluid[f.density];
+  const auto wall_mass = walls[w.mass];
+  const auto wall_density = walls[w.density];
+  neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
+    if (j != i) add(mass[j] / density[j], x_ij, r2);
+  });
+  neighbors.for_each_wall_neighbor(i, x, walls[w.position], [&](Index b, const Vector<D>& x_ib, Real r2) {
+    add(wall_mass[b] / wall_density[b], x_ib, r2);
+  });
+}
+
+}  // namespace detail
+
+/// The divergence of position ∇·r_i = −Σ_j V_j x_ij·∇W_ij over fluid and wall neighbours
+/// (V_j = m_j/ρ_j): the dimension inside the fluid, smaller where the support is partly empty,
+/// which marks the free surface (Lee et al. 2008; Lind et al. 2012 take ∇·r < 1.5 in 2D).
+template <int D, class Kernel>
+void position_divergence(const Kernel& kernel, const ParticleSet<D>& fluid, const FluidFields<D>& f,
+                         const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
+                         std::span<Real> divergence) {
+  for_each_particle(fluid.size(), [&](std::size_t i) {
+    Real sum = 0;
+    detail::for_each_volume_neighbor<D>(i, fluid, f, neighbors, walls, w,
+                                        [&](Real volume, const Vector<D>& x_ij, Real r2) {
+                                          sum -= volume * x_ij.dot(kernel.gradient(x_ij, std::sqrt(r2)));
+                                        });
+    divergence[i] = sum;
+  });
+}
+
+/// Writes the shift of every fluid particle into `shift`:
+///   δr_i = −D_i Σ_j [1 + R (W_ij/W(Δx))^n] V_j ∇W_ij,  R = 0.2, n = 4
+/// (Lind, Xu, Stansby & Rogers 2012, eq. 13 with the anti-pairing term of their eq. 14), over
+/// fluid and wall neighbours, so that a particle moves down the gradient of particle
+/// concentration and pairs closer than Δx repel. D is that of Sun et al. 2017 (eq. 9),
+/// CFL·Ma·(2h)² = 4 h U Δt, with U the current maximum speed: the shift is a diffusion of 4 h U
+/// per unit time whatever the time step, and a fluid coming to rest is no longer stirred. (The
+/// particle's own speed instead of U, as in Skillen et al. 2013, leaves the stagnation points of
+/// a vortex, where the lattice pairs first, unshifted.)
+/// Near a free surface the concentration gradient is that of the surface itself, and a full
+/// shift would push the fluid out through it: a particle with a free-surface particle (∇·r below
+/// the threshold, itself included) within its support keeps only the tangential part of its shift,
+/// (I − n nᵀ) δr, with n = −Σ V_j ∇W_ij / |…| (Lind et al. 2012, Sec. 3.3); a splash particle is
+/// not shifted.
+template <int D, class Kernel>
+void particle_shifting(const Kernel& kernel, const ShiftingSettings& settings, const ParticleSet<D>& fluid,
+                       const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
+                       const WallFields<D>& w, std::span<const Real> divergence, VectorView<D> shift) {
+  constexpr Real repulsion = Real(0.2);  // R
+  const auto x = fluid[f.position];
+  for_each_particle(fluid.size(), [&](std::size_t i) {
+    if (divergence[i] < settings.isolated_divergence) {
+      shift.set(i, Vector<D>::Zero());
+      return;
+    }
+    Vector<D> concentration_gradient = Vector<D>::Zero();  // Σ V_j ∇W_ij
+    Vector<D> weighted_gradient = Vector<D>::Zero();       // Σ [1 + R (W/W(Δx))⁴] V_j ∇W_ij
+    detail::for_each_volume_neighbor<D>(i, fluid, f, neighbors, walls, w,
+                                        [&](Real volume, const Vector<D>& x_ij, Real r2) {
+                                          const Real r = std::sqrt(r2);
+                                          const Vector<D> grad_w = volume * kernel.gradient(x_ij, r);
+                                          const Real ratio = kernel.value(r) / settings.lattice_kernel;
+                                          const Real ratio2 = ratio * ratio;
+                                          concentration_gradient += grad_w;
+                                          weighted_gradient += (1 + repulsion * ratio2 * ratio2) * grad_w;
+                                        });
+    bool near_surface = divergence[i] < settings.surface_divergence;
+    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>&, Real) {
+      near_surface = near_surface || divergence[j] < settings.surface_divergence;
+    });
+    Vector<D> delta = -settings.diffusion * weighted_gradient;
+    const Real norm = concentration_gradient.norm();
+    if (near_surface && norm > 0) {
+      const Vector<D> normal = -concentration_gradient / norm;
+      delta -= delta.dot(normal) * normal;
+    }
+    shift.set(i, delta);
+  });
+}
+
+}  // namespace tide::passes
