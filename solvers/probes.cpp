@@ -47,26 +47,14 @@ Real length_inside(const GridDomain<D>& domain, const Vector<D>& start, const Ve
 template <int D>
 Real probe_pressure(const Wcsph<D>& simulation, const Vector<D>& point) {
   const auto& fluid = simulation.fluid();
-  const auto& f = simulation.fluid_fields();
-  const auto x = fluid[f.position];
-  const auto mass = fluid[f.mass];
-  const auto density = fluid[f.density];
-  const auto pressure = fluid[f.pressure];
+  const auto density = fluid[simulation.fluid_fields().density];
+  const auto pressure = fluid[simulation.fluid_fields().pressure];
   const Vector<D> gravity = simulation.gravity();
-  Real weight_sum = 0;
-  Real pressure_sum = 0;
-  std::visit(
-      [&](const auto& kernel) {
-        simulation.fluid_grid().for_each_neighbor_of(point, x, [&](Index j, const Vector<D>& x_pj, Real r2) {
-          const Real weight = mass[j] / density[j] * kernel.value(std::sqrt(r2));
-          weight_sum += weight;
-          pressure_sum += weight * (pressure[j] + density[j] * gravity.dot(x_pj));
-        });
-      },
-      simulation.kernel());
   const EquationOfState& eos = simulation.equation_of_state();
-  if (!(weight_sum > 0)) return eos.pressure(eos.rest_density());
-  const Real p = pressure_sum / weight_sum;
+  const Real at_rest = eos.pressure(eos.rest_density());
+  const Real p = shepard_interpolation<D>(
+      simulation, point, [&](Index j, const Vector<D>& x_pj) { return pressure[j] + density[j] * gravity.dot(x_pj); },
+      at_rest);
   return simulation.scene().solver.clamp_negative_pressure ? std::max(p, Real(0)) : p;
 }
 

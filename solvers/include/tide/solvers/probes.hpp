@@ -4,6 +4,9 @@
 // particles around one point. Each reading walks the neighbour grid's cells around its points, so
 // it costs O(neighbours) per point, never O(particles), and reads the state without changing it.
 
+#include <cmath>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "tide/core/scene.hpp"
@@ -11,9 +14,41 @@
 
 namespace tide {
 
-/// The pressure at `point`, a Shepard-normalised kernel interpolation over the fluid particles
-/// within the kernel support, each moved hydrostatically from its own position to the point
-/// (the wall-pressure extrapolation of Adami, Hu & Adams 2012, eq. 27, used for a probe):
+/// The Shepard-normalised kernel interpolation at `point` of a quantity of the fluid particles,
+///   q(x) = Σ_f q_f V_f W(x − x_f) / Σ_f V_f W(x − x_f),   V_f = m_f / ρ_f,
+/// over the fluid particles within the kernel support of `point` (Shepard 1968; the SPH
+/// interpolant of Monaghan 1992, normalised). `quantity(j, x − x_j)` gives q_j, a Real or a
+/// Vector<D>; `no_fluid` is returned where no fluid particle is within reach.
+template <int D, class Value, class Quantity>
+Value shepard_interpolation(const Wcsph<D>& simulation, const Vector<D>& point, Quantity&& quantity, Value no_fluid) {
+  const auto& fluid = simulation.fluid();
+  const auto& f = simulation.fluid_fields();
+  const auto mass = fluid[f.mass];
+  const auto density = fluid[f.density];
+  Value weighted;
+  if constexpr (std::is_arithmetic_v<Value>) {
+    weighted = 0;
+  } else {
+    weighted = Value::Zero();
+  }
+  Real weight_sum = 0;
+  std::visit(
+      [&](const auto& kernel) {
+        simulation.fluid_grid().for_each_neighbor_of(
+            point, fluid[f.position], [&](Index j, const Vector<D>& x_pj, Real r2) {
+              const Real weight = mass[j] / density[j] * kernel.value(std::sqrt(r2));
+              weighted += weight * quantity(j, x_pj);
+              weight_sum += weight;
+            });
+      },
+      simulation.kernel());
+  if (!(weight_sum > 0)) return no_fluid;
+  return weighted / weight_sum;
+}
+
+/// The pressure at `point`: the Shepard interpolation of the fluid particles' pressures, each
+/// moved hydrostatically from its own position to the point (the wall-pressure extrapolation of
+/// Adami, Hu & Adams 2012, eq. 27, used for a probe):
 ///   p(x) = Σ_f (p_f + ρ_f g·(x − x_f)) V_f W(x − x_f) / Σ_f V_f W(x − x_f),   V_f = m_f / ρ_f.
 /// Only fluid particles count. A point on a wall is the usual place of a sensor; the wall
 /// particles there hold pressures already extrapolated from these same fluid particles, so
