@@ -10,6 +10,7 @@
 #include "tide/core/kernels/cubic_spline.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/solvers/probes.hpp"
 #include "tide/solvers/wcsph.hpp"
 
 namespace tide {
@@ -54,7 +55,8 @@ TEST(ThreadDeterminism, KernelSumPassAndReductionAreBitwiseIdentical) {
 }
 
 // A small 2D dam break, 100 steps: the whole WCSPH pipeline (sort, density, walls, momentum,
-// reductions for the time step) must give the same particle state for any thread count.
+// reductions for the time step) must give the same particle state, and its probes the same
+// readings, for any thread count.
 std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod density, scene::Shifting shifting) {
   const ThreadLimit limit(threads);
   scene::Scene s;
@@ -81,6 +83,10 @@ std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod 
     state.push_back(static_cast<Real>(fluid[fluid.id()][i]));
   }
   state.push_back(simulation.time());
+  const std::vector<scene::Probe> probes{{"wall", scene::ProbeType::pressure, {0, 0.1, 0}},
+                                         {"bulk", scene::ProbeType::pressure, {0.1, 0.05, 0}},
+                                         {"gauge", scene::ProbeType::water_height, {0.15, 0, 0}}};
+  for (const double reading : read_probes<2>(simulation, probes)) state.push_back(static_cast<Real>(reading));
   return state;
 }
 

@@ -154,6 +154,36 @@ TEST_F(TideCommand, UntilOverridesTheEndTime) {
   EXPECT_FALSE(fs::exists(out / "frames_000003.h5"));
 }
 
+// A scene with probes gets <out>/probes.csv: the header naming the scene and each probe, then a
+// row at the start and one per probe interval.
+TEST_F(TideCommand, RunWritesProbes) {
+  const fs::path out = directory_ / "out";
+  const fs::path scene =
+      write_scene(R"("time")", R"("probes": [{"name": "P1", "type": "pressure", "position": [0.4, 0.01]},
+                {"name": "H1", "type": "water_height", "position": [0.05, 0]}],
+  "output": {"probe_interval": 0.005},
+  "time")");
+  const CommandResult result = run_tide("run --out " + out.string() + " " + scene.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("probes.csv"), std::string::npos) << result.output;
+  std::ifstream csv(out / "probes.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_GE(lines.size(), 5u);
+  EXPECT_EQ(lines[0], "# TideSPH probes of scene " + scene.string());
+  EXPECT_EQ(lines[1], "# P1: pressure (Pa) at [0.4, 0.01]");
+  EXPECT_EQ(lines[2], "# H1: water_height (m) above [0.05, 0]");
+  EXPECT_EQ(lines[3], "time,P1,H1");
+  EXPECT_EQ(lines.size(), 4u + 11u);  // t = 0, 0.005, ..., 0.05
+  std::istringstream first(lines[4]);
+  double time = -1, pressure = -1, height = -1;
+  char comma = 0;
+  first >> time >> comma >> pressure >> comma >> height;
+  EXPECT_EQ(time, 0);
+  EXPECT_EQ(pressure, 0);              // the water has not reached the far wall
+  EXPECT_NEAR(height, 0.2, 0.01 / 2);  // the column, 0.2 m high
+}
+
 // c0 = 0.2 m/s for a fluid that falls at ~0.5 m/s: the run leaves the weakly compressible
 // regime, stops with exit code 3 and a diagnosis, and the frames written before stay readable.
 TEST_F(TideCommand, UnstableRunExitsWithThreeAndKeepsTheLastGoodFrame) {

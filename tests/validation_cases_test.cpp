@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "tide/validation/case.hpp"
@@ -70,6 +71,36 @@ TEST(ValidationCases, DamBreakFrontFollowsTheExperiments) {
   EXPECT_LE(metric(r, "start_offset"), 0.4);
   EXPECT_LE(metric(r, "front_error_after_offset"), 0.04);
   EXPECT_LE(metric(r, "front_error_after_offset_ko"), 0.045);
+}
+
+// H/Δx = 40 (3200 particles, 8257 steps, 45 s on 2 shared cores): against Buchner's downstream-wall
+// pressure, filtered over 0.1 in τ = t sqrt(g/H). Measured: first peak −0.8%, its time 0.245 late,
+// impact (half the peak reached) 0.096 late, L2 error 0.453. The filtered peak scatters between
+// resolutions (+149% at H/Δx = 20, +14% at 80), so its bound is that scatter, ±20%, not 25% of a
+// value that happens to be near zero; a wall that lets the water through or a missing impact
+// moves it by −100%. The others: the measured value + 25%.
+TEST(ValidationCases, DamBreakWallPressureFollowsBuchner) {
+  const RunRecord r = run_at_test_resolution("dam_break_buchner");
+  EXPECT_LE(std::abs(metric(r, "first_peak_error")), 0.2);
+  EXPECT_LE(std::abs(metric(r, "first_peak_time_error")), 0.31);
+  EXPECT_LE(std::abs(metric(r, "impact_time_error")), 0.12);
+  EXPECT_LE(metric(r, "pressure_l2_error"), 0.57);
+}
+
+// The Lobovsky scene at H/Δx = 12 (1724 particles, 6 across the width, 2445 steps, 52 s on 2
+// shared cores), its end-wall probe at 0.2H against Buchner as above. The impact arrives within
+// 0.036 of Buchner's (measured −0.036; bound +25%, rounded). At this resolution the kernel
+// support (0.085 m) is wider than the probe's height (0.06 m) and the filtered first peak
+// overshoots (measured +196%, bound +25%); a missing impact would read −100%, hence the lower
+// bound. L2 error: measured 1.32, bound +25%. (At H/Δx = 24 the impact is 0.30 late, the peak
+// +44% and the L2 error 0.63: the 3D case is far from converged at the resolutions ctest can
+// afford; dam_break_buchner shows the converged behaviour.)
+TEST(ValidationCases, DamBreak3DWallPressureAtLowResolution) {
+  const RunRecord r = run_at_test_resolution("dam_break_3d");
+  EXPECT_LE(std::abs(metric(r, "impact_time_error")), 0.05);
+  EXPECT_GE(metric(r, "first_peak_error"), 0);
+  EXPECT_LE(metric(r, "first_peak_error"), 2.45);
+  EXPECT_LE(metric(r, "pressure_l2_error"), 1.65);
 }
 
 // 40 particles across, with Fickian shifting, t = 10, centre lines averaged over the last time

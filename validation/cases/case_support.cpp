@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "tide/solvers/probes.hpp"
+
 namespace tide::validation {
 
 double smoothing_ratio_for(KernelType kernel) {
@@ -54,25 +56,10 @@ Curve read_reference(const std::string& file, int x_column, int y_column) {
 
 template <int D>
 Vector<D> shepard_velocity(const Wcsph<D>& simulation, const Vector<D>& point) {
-  const auto& fluid = simulation.fluid();
-  const auto& f = simulation.fluid_fields();
-  const auto x = fluid[f.position];
-  const auto v = fluid[f.velocity];
-  const auto mass = fluid[f.mass];
-  const auto density = fluid[f.density];
-  Vector<D> weighted = Vector<D>::Zero();
-  Real weight_sum = 0;
-  std::visit(
-      [&](const auto& kernel) {
-        simulation.fluid_grid().for_each_neighbor_of(point, x, [&](Index j, const Vector<D>&, Real r2) {
-          const Real weight = mass[j] / density[j] * kernel.value(std::sqrt(r2));
-          weighted += weight * v[j];
-          weight_sum += weight;
-        });
-      },
-      simulation.kernel());
-  if (!(weight_sum > 0)) return Vector<D>::Constant(std::numeric_limits<Real>::quiet_NaN());
-  return weighted / weight_sum;
+  const auto v = simulation.fluid()[simulation.fluid_fields().velocity];
+  return shepard_interpolation<D>(
+      simulation, point, [&](Index j, const Vector<D>&) { return Vector<D>(v[j]); },
+      Vector<D>(Vector<D>::Constant(std::numeric_limits<Real>::quiet_NaN())));
 }
 
 template Vector<2> shepard_velocity<2>(const Wcsph<2>&, const Vector<2>&);

@@ -98,6 +98,20 @@ struct Domain {
   std::array<bool, 3> periodic{};
 };
 
+/// The domain a container needs when the scene gives none: its inner box grown by the wall
+/// thickness on every side and, above an open top, as much room again as the container is high,
+/// so that a splash stays inside the domain.
+inline Domain domain_around(const Container& container, double wall_thickness, int dimension) {
+  Domain domain;
+  for (int d = 0; d < dimension; ++d) {
+    domain.box.min[d] = container.inner.min[d] - wall_thickness;
+    domain.box.max[d] = container.inner.max[d] + wall_thickness;
+  }
+  const int up = dimension - 1;
+  if (container.open_top) domain.box.max[up] += container.inner.max[up] - container.inner.min[up];
+  return domain;
+}
+
 enum class Scheme { wcsph };
 enum class EquationOfState { tait, linear };
 enum class DensityMethod { summation, continuity };
@@ -136,6 +150,17 @@ inline constexpr std::array<std::string_view, 7> output_field_names{"position", 
 
 struct Output {
   std::vector<std::string> fields{"position", "velocity", "density", "pressure"};
+  double probe_interval = 0.01;  // s between probe rows; the reader sets time.output_interval when the file has none
+};
+
+/// What a probe measures (docs/scenes.md, "probes"): the pressure at its position, or the height
+/// of the free surface above its position along the up (−gravity) direction.
+enum class ProbeType { pressure, water_height };
+
+struct Probe {
+  std::string name;  // the probe's column in probes.csv
+  ProbeType type = ProbeType::pressure;
+  Vec position{};
 };
 
 struct Scene {
@@ -152,6 +177,7 @@ struct Scene {
   Solver solver;
   Time time;
   Output output;
+  std::vector<Probe> probes;
 };
 
 }  // namespace tide::scene

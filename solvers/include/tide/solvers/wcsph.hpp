@@ -69,14 +69,19 @@ class Wcsph {
   /// Advances one adaptive time step; throws InstabilityError when the state leaves its bounds.
   StepReport step();
 
+  const scene::Scene& scene() const { return scene_; }
   /// Simulated time in s, kept in double so that a float build still resolves small steps late in a run.
   double time() const { return time_; }
   std::uint64_t step_count() const { return step_count_; }
   const ParticleSet<D>& fluid() const { return fluid_; }
   const ParticleSet<D>& walls() const { return walls_; }
   const FluidFields<D>& fluid_fields() const { return fluid_fields_; }
+  const WallFields<D>& wall_fields() const { return wall_fields_; }
   const EquationOfState& equation_of_state() const { return eos_; }
+  /// Gravity now: the scene's, or less while it is being raised (solver.gravity_ramp_time).
+  Vector<D> gravity() const { return gravity_at(time_); }
   const NeighborGrid<D>& fluid_grid() const { return neighbors_.fluid_grid(); }
+  const NeighborGrid<D>& wall_grid() const { return neighbors_.wall_grid(); }
   Real smoothing_length() const { return smoothing_length_; }
   const AnyKernel<D>& kernel() const { return kernel_; }
   Real max_speed() const { return max_speed_; }
