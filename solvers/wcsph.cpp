@@ -191,12 +191,21 @@ Vector<D> Wcsph<D>::gravity_at(double t) const {
 }
 
 template <int D>
+Vector<D> Wcsph<D>::hydrostatic_part(Vector<D> body_force) const {
+  // Along a periodic axis the pressure is periodic too: a body force there (the driving force of
+  // a periodic channel) accelerates the fluid and builds no hydrostatic pressure.
+  for (int d = 0; d < D; ++d)
+    if (scene_.domain.periodic[d]) body_force[d] = 0;
+  return body_force;
+}
+
+template <int D>
 void Wcsph<D>::set_hydrostatic_density() {
   // Continuity density starts from the fluid at rest under gravity: p = ρ0 |g| depth below the
   // highest particle (plus half a spacing, its share of the column), ρ from the equation of state.
   auto density = fluid_[fluid_fields_.density];
   const auto x = std::as_const(fluid_)[fluid_fields_.position];
-  const Vector<D> gravity = gravity_at(time_);
+  const Vector<D> gravity = hydrostatic_part(gravity_at(time_));
   const Real g = gravity.norm();
   if (g == 0 || fluid_.empty()) {
     for (Real& rho : density) rho = eos_.rest_density();
@@ -285,7 +294,7 @@ StepReport Wcsph<D>::step() {
   lap(clock, pass_times_.neighbor_search);
   const Vector<D> gravity = gravity_at(time_ + dt);
   if (scene_.solver.density == scene::DensityMethod::continuity) {
-    compute_density_rate(gravity);
+    compute_density_rate(hydrostatic_part(gravity));
     auto density = fluid_[fluid_fields_.density];
     const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
     for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] += dt * rate[i]; });

@@ -93,6 +93,9 @@ class Wcsph {
  private:
   /// Gravity at time t: the scene's, raised smoothly from zero over solver.gravity_ramp_time.
   Vector<D> gravity_at(double t) const;
+  /// The part of a body force that a fluid at rest balances with a pressure gradient: its
+  /// components along the closed (non-periodic) axes.
+  Vector<D> hydrostatic_part(Vector<D> body_force) const;
   void set_hydrostatic_density();
   void compute_interactions(const Vector<D>& gravity);
   void compute_density_rate(const Vector<D>& gravity);
