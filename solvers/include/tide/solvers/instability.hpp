@@ -12,8 +12,10 @@ namespace tide {
 /// density beyond the scene's band, or a particle faster than the speed of sound.
 class InstabilityError : public std::runtime_error {
  public:
+  /// `note`, when not empty, follows the diagnosis as a sentence of its own (e.g. what bound the
+  /// time step).
   InstabilityError(Index particle_id, std::string field, double value, std::uint64_t step, double time,
-                   const std::string& reason);
+                   const std::string& reason, const std::string& note = "");
 
   Index particle_id() const { return particle_id_; }
   const std::string& field() const { return field_; }
