@@ -401,7 +401,7 @@ void Wcsph<D>::check_state() {
   if (!std::isfinite(a[i].squaredNorm()))
     throw InstabilityError(id, "acceleration", static_cast<double>(a[i].norm()), step_count_, t, "not finite",
                            step_note);
-  if (!std::isfinite(density[i]) || density[i] > ratio * rho0 || density[i] < rho0 / ratio)
+  if (!std::isfinite(density[i]) || density[i] > ratio * rho0 || (check_low_density && density[i] < rho0 / ratio))
     throw InstabilityError(
         id, "density", static_cast<double>(density[i]), step_count_, t,
         "outside [rho0/" + format_number(ratio) + ", " + format_number(ratio) + " rho0], solver.max_density_ratio",

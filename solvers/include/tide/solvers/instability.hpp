@@ -9,7 +9,8 @@
 namespace tide {
 
 /// Thrown when a run leaves the range where its results mean anything: a non-finite value, a
-/// density beyond the scene's band, or a particle faster than the speed of sound.
+/// density beyond the scene's band (solver.max_density_ratio), or a particle faster than
+/// solver.max_mach_number times the speed of sound.
 class InstabilityError : public std::runtime_error {
  public:
   /// `note`, when not empty, follows the diagnosis as a sentence of its own (e.g. what bound the
