@@ -162,9 +162,21 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   return exit_ok;
 }
 
+// A scene the reader accepts but that is likely to go unstable: said before any work, without
+// stopping it (stress-testing a limit is a reason to run such a scene).
+void warn_about(const scene::Scene& scene) {
+  if (scene.solver.cfl > max_stable_cfl) {
+    std::cerr << "tide: warning: " << scene.source << ": /solver/cfl = " << scene.solver.cfl << " is above "
+              << max_stable_cfl << ", beyond which explicit WCSPH steps are not known to be stable "
+              << "(docs/stability.md, time step)\n";
+  }
+}
+
 std::optional<scene::Scene> load(const std::filesystem::path& file) {
   try {
-    return io::read_scene_file(file);
+    scene::Scene scene = io::read_scene_file(file);
+    warn_about(scene);
+    return scene;
   } catch (const io::SceneError& error) {
     std::cerr << "tide: " << error.what() << '\n';
     return std::nullopt;

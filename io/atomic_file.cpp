@@ -1,4 +1,4 @@
-#include "atomic_file.hpp"
+#include "tide/io/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -53,6 +53,11 @@ void write_text_file(const fs::path& path, const std::string& text) {
   out << text;
   out.close();
   if (!out) throw std::runtime_error(path.string() + ": cannot write the file");
+}
+
+void replace_text_atomically(const fs::path& path, const std::string& text) {
+  if (path.has_parent_path()) fs::create_directories(path.parent_path());
+  replace_atomically(path, [&](const fs::path& temporary) { write_text_file(temporary, text); });
 }
 
 }  // namespace tide::io

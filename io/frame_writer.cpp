@@ -12,7 +12,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "atomic_file.hpp"
+#include "tide/io/atomic_file.hpp"
 
 namespace tide::io {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "atomic_file.hpp"
+#include "tide/io/atomic_file.hpp"
 
 namespace tide::io {
 namespace {

@@ -250,7 +250,6 @@ struct NumberRule {
 constexpr NumberRule any_number{"a number", [](double) { return true; }};
 constexpr NumberRule positive{"a number > 0", [](double x) { return x > 0; }};
 constexpr NumberRule non_negative{"a number >= 0", [](double x) { return x >= 0; }};
-constexpr NumberRule in_unit_interval{"a number in (0, 1]", [](double x) { return x > 0 && x <= 1; }};
 constexpr NumberRule above_one{"a number > 1", [](double x) { return x > 1; }};
 
 /// An enumerator with its spelling in scene files.
@@ -591,15 +590,24 @@ class SceneParser {
     return fluid;
   }
 
-  /// A uniform velocity [vx, vy(, vz)] or a named field {"taylor_green": {...}}.
-  std::variant<Vec, scene::TaylorGreenVelocity> initial_velocity(const Node& node) const {
+  /// A uniform velocity [vx, vy(, vz)] or a named field: {"taylor_green": {...}} or
+  /// {"rotation": {...}}, both two-dimensional.
+  std::variant<Vec, scene::TaylorGreenVelocity, scene::RigidRotation> initial_velocity(const Node& node) const {
     if (node.value->is_array()) return vector(node);
-    if (!node.value->is_object()) {
-      fail(node, "a velocity array of " + std::to_string(dimension_) + " numbers or {\"taylor_green\": {...}}");
+    const std::string expected = "a velocity array of " + std::to_string(dimension_) +
+                                 " numbers, {\"taylor_green\": {...}} or {\"rotation\": {...}}";
+    if (!node.value->is_object()) fail(node, expected);
+    expect_object(node, {"taylor_green", "rotation"});
+    if (node.value->size() != 1) fail(node, expected);
+    if (const Node field = child(node, "rotation"); field.present()) {
+      if (dimension_ != 2) fail(field, "a 2D scene (the rotation field turns about the z axis)");
+      expect_object(field, {"centre", "angular_velocity"});
+      scene::RigidRotation rotation;
+      rotation.centre = vector(child(field, "centre"));
+      read_optional(field, "angular_velocity", rotation.angular_velocity, any_number);
+      return rotation;
     }
-    expect_object(node, {"taylor_green"});
     const Node field = child(node, "taylor_green");
-    if (!field.present()) fail(node, "an object with the key \"taylor_green\"");
     if (dimension_ != 2) fail(field, "a 2D scene (the Taylor-Green field is two-dimensional)");
     expect_object(field, {"amplitude", "length"});
     scene::TaylorGreenVelocity taylor_green;
@@ -681,9 +689,10 @@ class SceneParser {
   }
 
   void read_solver(const Node& node, scene::Solver& solver) const {
-    expect_object(node, {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha",
-                         "beta", "cfl", "viscous_number", "force_number", "max_density_ratio",
-                         "clamp_negative_pressure", "gravity_ramp_time", "background_pressure", "shifting"});
+    expect_object(
+        node, {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha", "beta",
+               "cfl", "viscous_number", "force_number", "max_density_ratio", "max_mach_number",
+               "clamp_negative_pressure", "gravity_ramp_time", "background_pressure", "shifting", "artificial_stress"});
     read_optional(node, "scheme", solver.scheme, scheme_names);
     read_optional(node, "equation_of_state", solver.equation_of_state, equation_of_state_names);
     read_optional(node, "tait_exponent", solver.tait_exponent, positive);
@@ -692,16 +701,18 @@ class SceneParser {
     read_optional(node, "viscosity", solver.viscosity, viscosity_model_names);
     read_optional(node, "alpha", solver.alpha, non_negative);
     read_optional(node, "beta", solver.beta, non_negative);
-    read_optional(node, "cfl", solver.cfl, in_unit_interval);
+    read_optional(node, "cfl", solver.cfl, positive);
     read_optional(node, "viscous_number", solver.viscous_number, positive);
     read_optional(node, "force_number", solver.force_number, positive);
     read_optional(node, "max_density_ratio", solver.max_density_ratio, above_one);
+    read_optional(node, "max_mach_number", solver.max_mach_number, positive);
     if (const Node clamp = child(node, "clamp_negative_pressure"); clamp.present()) {
       solver.clamp_negative_pressure = boolean(clamp);
     }
     read_optional(node, "gravity_ramp_time", solver.gravity_ramp_time, non_negative);
     read_optional(node, "background_pressure", solver.background_pressure, non_negative);
     read_optional(node, "shifting", solver.shifting, shifting_names);
+    read_optional(node, "artificial_stress", solver.artificial_stress, non_negative);
   }
 
   scene::Time read_time(const Node& node) const {

@@ -3,6 +3,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -97,6 +98,13 @@ Real lattice_kernel_sum(const Kernel& kernel, const scene::Scene& scene) {
   }
 }
 
+// Six significant digits, for messages.
+std::string format_number(double value) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%g", value);
+  return text.data();
+}
+
 // Adds the seconds since `start` to `total` and restarts the clock.
 void lap(std::chrono::steady_clock::time_point& start, double& total) {
   const auto now = std::chrono::steady_clock::now();
@@ -115,6 +123,26 @@ struct StateSummary {
             std::max(a.max_acceleration_squared, b.max_acceleration_squared), std::min(a.bad_particle, b.bad_particle)};
   }
 };
+
+// The momentum pass compiled for the viscosity model and for artificial stress on or off, picked
+// once per step outside the particle loop: a scene without artificial stress runs a pass without it.
+template <int D, class Kernel>
+void run_momentum(const Kernel& kernel, const passes::ViscositySettings& viscosity,
+                  const passes::ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
+                  const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
+                  const Vector<D>& gravity) {
+  const auto run = [&]<scene::ViscosityModel Model, bool Stress>() {
+    passes::momentum<D, Model, Stress>(kernel, viscosity, stress, fluid, f, neighbors, walls, w, gravity);
+  };
+  const bool with_stress = stress.epsilon > 0;
+  if (viscosity.model == scene::ViscosityModel::artificial) {
+    with_stress ? run.template operator()<scene::ViscosityModel::artificial, true>()
+                : run.template operator()<scene::ViscosityModel::artificial, false>();
+  } else {
+    with_stress ? run.template operator()<scene::ViscosityModel::laminar, true>()
+                : run.template operator()<scene::ViscosityModel::laminar, false>();
+  }
+}
 
 }  // namespace
 
@@ -231,6 +259,10 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
                                       eos_.sound_speed(),
                                       kinematic_viscosity_,
                                       smoothing_length_};
+  const passes::ArtificialStressSettings stress{
+      static_cast<Real>(scene_.solver.artificial_stress),
+      std::visit([&](const auto& kernel) { return 1 / kernel.value(static_cast<Real>(scene_.particle_spacing)); },
+                 kernel_)};
   auto clock = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& kernel) {
@@ -250,13 +282,7 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
         passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, eos_, gravity,
                               scene_.solver.clamp_negative_pressure);
         lap(clock, pass_times_.wall_state);
-        if (scene_.solver.viscosity == scene::ViscosityModel::artificial) {
-          passes::momentum<D, scene::ViscosityModel::artificial>(kernel, viscosity, fluid_, fluid_fields_, neighbors_,
-                                                                 walls_, wall_fields_, gravity);
-        } else {
-          passes::momentum<D, scene::ViscosityModel::laminar>(kernel, viscosity, fluid_, fluid_fields_, neighbors_,
-                                                              walls_, wall_fields_, gravity);
-        }
+        run_momentum<D>(kernel, viscosity, stress, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_, gravity);
         lap(clock, pass_times_.momentum);
       },
       kernel_);
@@ -276,6 +302,7 @@ template <int D>
 StepReport Wcsph<D>::step() {
   StepReport report;
   report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
+  last_time_step_ = report.time_step;
   const Real dt = report.time_step.dt;
   auto clock = std::chrono::steady_clock::now();
   {
@@ -354,11 +381,11 @@ void Wcsph<D>::check_state() {
   const Real rho0 = eos_.rest_density();
   const Real ratio = static_cast<Real>(scene_.solver.max_density_ratio);
   const bool check_low_density = scene_.solver.density == scene::DensityMethod::continuity;
-  const Real c0 = eos_.sound_speed();
+  const Real max_speed = static_cast<Real>(scene_.solver.max_mach_number) * eos_.sound_speed();
   auto out_of_bounds = [&](std::size_t i, Real speed2) {
     const Real rho = density[i];
     return !std::isfinite(x[i].squaredNorm() + speed2 + a[i].squaredNorm() + rho) || rho > ratio * rho0 ||
-           (check_low_density && rho < rho0 / ratio) || speed2 > c0 * c0;
+           (check_low_density && rho < rho0 / ratio) || speed2 > max_speed * max_speed;
   };
   const StateSummary summary = reduce(
       fluid_.size(), StateSummary{},
@@ -375,17 +402,40 @@ void Wcsph<D>::check_state() {
   const std::size_t i = summary.bad_particle;
   const Index id = fluid_[fluid_.id()][i];
   const double t = time_;
+  const std::string step_note = time_step_note();
   if (!std::isfinite(x[i].squaredNorm()))
-    throw InstabilityError(id, "position", static_cast<double>(x[i].norm()), step_count_, t, "not finite");
+    throw InstabilityError(id, "position", static_cast<double>(x[i].norm()), step_count_, t, "not finite", step_note);
   if (!std::isfinite(v[i].squaredNorm()))
-    throw InstabilityError(id, "velocity", static_cast<double>(v[i].norm()), step_count_, t, "not finite");
+    throw InstabilityError(id, "velocity", static_cast<double>(v[i].norm()), step_count_, t, "not finite", step_note);
   if (!std::isfinite(a[i].squaredNorm()))
-    throw InstabilityError(id, "acceleration", static_cast<double>(a[i].norm()), step_count_, t, "not finite");
-  if (!std::isfinite(density[i]) || density[i] > ratio * rho0 || density[i] < rho0 / ratio)
-    throw InstabilityError(id, "density", static_cast<double>(density[i]), step_count_, t,
-                           "outside [rho0/" + std::to_string(ratio) + ", " + std::to_string(ratio) + " rho0]");
+    throw InstabilityError(id, "acceleration", static_cast<double>(a[i].norm()), step_count_, t, "not finite",
+                           step_note);
+  if (!std::isfinite(density[i]) || density[i] > ratio * rho0 || (check_low_density && density[i] < rho0 / ratio))
+    throw InstabilityError(
+        id, "density", static_cast<double>(density[i]), step_count_, t,
+        "outside [rho0/" + format_number(ratio) + ", " + format_number(ratio) + " rho0], solver.max_density_ratio",
+        step_note);
   throw InstabilityError(id, "speed", static_cast<double>(v[i].norm()), step_count_, t,
-                         "faster than the speed of sound c0 = " + std::to_string(c0) + " m/s");
+                         "faster than " + format_number(scene_.solver.max_mach_number) +
+                             " x c0 = " + format_number(max_speed) + " m/s, solver.max_mach_number",
+                         step_note);
+}
+
+template <int D>
+std::string Wcsph<D>::time_step_note() const {
+  if (step_count_ == 0) return "";
+  const TimeStepRule& rule = time_step_rule_;
+  std::string note = "the last time step was dt = " + format_number(last_time_step_.dt) + " s, set by the " +
+                     std::string(time_step_limit_name(last_time_step_.limit)) +
+                     " limit (solver.cfl = " + format_number(rule.cfl);
+  if (rule.kinematic_viscosity > 0) note += ", solver.viscous_number = " + format_number(rule.viscous_number);
+  note += ", solver.force_number = " + format_number(rule.force_number) + ")";
+  if (rule.cfl > max_stable_cfl) {
+    note += "; solver.cfl above " + format_number(max_stable_cfl) +
+            " is beyond the stable limit of the explicit integration: the time step is the likely cause, lower "
+            "solver.cfl";
+  }
+  return note;
 }
 
 template class Wcsph<2>;

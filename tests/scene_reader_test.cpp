@@ -280,11 +280,45 @@ TEST(SceneReader, ReadsWallAndFluidVelocities) {
   EXPECT_EQ(s.solver.shifting, scene::Shifting::fickian);
 }
 
+TEST(SceneReader, ReadsARigidRotation) {
+  const json document =
+      with(full_2d_scene(), "/fluid/0/velocity", {{"rotation", {{"centre", {0.2, 0.4}}, {"angular_velocity", -1.5}}}});
+  const auto& rotation = std::get<scene::RigidRotation>(parse(document).fluid[0].velocity);
+  EXPECT_EQ(rotation.centre, vec(0.2, 0.4));
+  EXPECT_EQ(rotation.angular_velocity, -1.5);
+}
+
+TEST(SceneReader, ReadsTheStabilityOptions) {
+  json document = with(full_2d_scene(), "/solver/artificial_stress", 0.2);
+  document = with(document, "/solver/max_mach_number", 0.5);
+  document = with(document, "/solver/cfl", 2.5);  // accepted; `tide run` warns above 1
+  const scene::Scene s = parse(document);
+  EXPECT_EQ(s.solver.artificial_stress, 0.2);
+  EXPECT_EQ(s.solver.max_mach_number, 0.5);
+  EXPECT_EQ(s.solver.cfl, 2.5);
+  const scene::Scene defaults = parse(minimal_scene());
+  EXPECT_EQ(defaults.solver.artificial_stress, 0);  // off
+  EXPECT_EQ(defaults.solver.max_mach_number, 1);
+}
+
+TEST(SceneReaderRefuses, StabilityOptionsOutOfRange) {
+  expect_refused(with(full_2d_scene(), "/solver/artificial_stress", -0.1), "/solver/artificial_stress",
+                 "a number >= 0");
+  expect_refused(with(full_2d_scene(), "/solver/artificial_stress", "on"), "/solver/artificial_stress",
+                 "a number >= 0");
+  expect_refused(with(full_2d_scene(), "/solver/max_mach_number", 0), "/solver/max_mach_number", "a number > 0");
+  expect_refused(with(full_2d_scene(), "/solver/cfl", 0), "/solver/cfl", "a number > 0");
+}
+
 TEST(SceneReaderRefuses, MalformedVelocities) {
-  expect_refused(with(full_2d_scene(), "/fluid/0/velocity", "fast"), "/fluid/0/velocity",
-                 "a velocity array of 2 numbers or {\"taylor_green\": {...}}");
+  const std::string velocity_expectation =
+      "a velocity array of 2 numbers, {\"taylor_green\": {...}} or {\"rotation\": {...}}";
+  expect_refused(with(full_2d_scene(), "/fluid/0/velocity", "fast"), "/fluid/0/velocity", velocity_expectation);
   expect_refused(with(full_2d_scene(), "/fluid/0/velocity", {{"vortex", 1}}), "/fluid/0/velocity/vortex",
-                 "one of the keys \"taylor_green\"");
+                 "one of the keys \"taylor_green\", \"rotation\"");
+  expect_refused(with(full_2d_scene(), "/fluid/0/velocity", json::object()), "/fluid/0/velocity", velocity_expectation);
+  expect_refused(with(full_2d_scene(), "/fluid/0/velocity/rotation", {{"angular_velocity", 1}}),
+                 "/fluid/0/velocity/rotation/centre", "an array of 2 numbers [x, y]");
   expect_refused(with(full_2d_scene(), "/walls/obstacles/0/velocity", {1, 0, 0}), "/walls/obstacles/0/velocity",
                  "an array of 2 numbers [x, y]");
 }
@@ -332,10 +366,10 @@ TEST(SceneReader, ReadsAFileAndNamesItInErrors) {
 
 TEST(SceneReaderRefuses, WrongTypeWithTheExactMessage) {
   const SceneError error = error_of(with(full_2d_scene(), "/solver/cfl", "fast").dump());
-  EXPECT_STREQ(error.what(), R"(dam.json: /solver/cfl: expected a number in (0, 1], got "fast")");
+  EXPECT_STREQ(error.what(), R"(dam.json: /solver/cfl: expected a number > 0, got "fast")");
   EXPECT_EQ(error.file(), "dam.json");
   EXPECT_EQ(error.key_path(), "/solver/cfl");
-  EXPECT_EQ(error.expected(), "a number in (0, 1]");
+  EXPECT_EQ(error.expected(), "a number > 0");
   EXPECT_EQ(error.found(), R"("fast")");
 }
 

@@ -56,8 +56,10 @@ TEST(ThreadDeterminism, KernelSumPassAndReductionAreBitwiseIdentical) {
 
 // A small 2D dam break, 100 steps: the whole WCSPH pipeline (sort, density, walls, momentum,
 // reductions for the time step) must give the same particle state, and its probes the same
-// readings, for any thread count.
-std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod density, scene::Shifting shifting) {
+// readings, for any thread count. Artificial stress acts only in tension: with the pressure clamp
+// off (`clamp` false), on the negative pressures a summation-density free surface has.
+std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod density, scene::Shifting shifting,
+                                              double artificial_stress = 0, bool clamp = true) {
   const ThreadLimit limit(threads);
   scene::Scene s;
   s.source = "thread determinism";
@@ -69,6 +71,8 @@ std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod 
   s.domain.box = {{-0.03, -0.03, 0}, {0.63, 1.0, 0}};
   s.solver.density = density;
   s.solver.shifting = shifting;
+  s.solver.artificial_stress = artificial_stress;
+  s.solver.clamp_negative_pressure = clamp;
   Wcsph<2> simulation(s);
   for (int k = 0; k < 100; ++k) simulation.step();
   const auto& fluid = simulation.fluid();
@@ -98,6 +102,15 @@ TEST(ThreadDeterminism, WcsphStateAfter100StepsIsBitwiseIdentical) {
       EXPECT_TRUE(same_bytes(one, two));
     }
   }
+}
+
+TEST(ThreadDeterminism, WcsphWithArtificialStressIsBitwiseIdentical) {
+  const auto summation = scene::DensityMethod::summation;
+  const auto one = wcsph_state_after_100_steps(1, summation, scene::Shifting::none, 0.2, false);
+  const auto two = wcsph_state_after_100_steps(2, summation, scene::Shifting::none, 0.2, false);
+  EXPECT_TRUE(same_bytes(one, two));
+  // The term acted: the state differs from the same run without it.
+  EXPECT_FALSE(same_bytes(one, wcsph_state_after_100_steps(1, summation, scene::Shifting::none, 0, false)));
 }
 
 }  // namespace

@@ -160,6 +160,28 @@ TEST(WcsphStability, SupersonicParticleIsReported) {
   }
 }
 
+// The speed band is solver.max_mach_number × c0: the start-up sloshing of a tank (a few cm/s)
+// is far below c0 = 31 m/s, but above 1e-4 c0, and the report names the band's key.
+TEST(WcsphStability, SpeedBandIsAConfigurableMultipleOfTheSoundSpeed) {
+  scene::Scene s = hydrostatic_scene(2, 0.5, 0.5, 10);
+  s.solver.max_mach_number = 1e-4;
+  Wcsph<2> simulation(s);
+  const double band = 1e-4 * static_cast<double>(simulation.equation_of_state().sound_speed());
+  try {
+    for (int k = 0; k < 2000; ++k) simulation.step();
+    FAIL() << "no instability reported";
+  } catch (const InstabilityError& error) {
+    EXPECT_EQ(error.field(), "speed");
+    EXPECT_GT(error.value(), band);
+    const std::string message = error.what();
+    EXPECT_NE(message.find("solver.max_mach_number"), std::string::npos) << message;
+    EXPECT_NE(message.find("the last time step was dt = "), std::string::npos) << message;
+  }
+  s.solver.max_mach_number = 1;
+  Wcsph<2> calm(s);
+  for (int k = 0; k < 2000; ++k) calm.step();
+}
+
 // Tait: p = B((ρ/ρ0)^γ − 1), B = ρ0 c0²/γ; linear: p = c0²(ρ − ρ0); density() inverts both, and
 // dp/dρ at ρ0 is c0² for both (the definition of the artificial sound speed).
 TEST(EquationOfState, TaitAndLinearMatchTheirFormulasAndInvert) {

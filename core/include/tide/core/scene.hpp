@@ -53,12 +53,19 @@ struct TaylorGreenVelocity {
   double length = 1;     // L, m
 };
 
+/// Rigid rotation about `centre` in the plane: u = −ω (y − y_c), v = ω (x − x_c), ω > 0
+/// counter-clockwise (the rotating square patch of Colagrossi 2005 starts this way).
+struct RigidRotation {
+  Vec centre{};
+  double angular_velocity = 1;  // ω, rad/s
+};
+
 /// A block of fluid particles filled on the lattice of the particle spacing, with its initial
 /// velocity: uniform, or a named field.
 struct FluidBlock {
   std::size_t material = 0;  // index into Scene::materials
   std::variant<Box, Ball> shape;
-  std::variant<Vec, TaylorGreenVelocity> velocity{Vec{}};
+  std::variant<Vec, TaylorGreenVelocity, RigidRotation> velocity{Vec{}};
 };
 
 enum class WallSlip { no_slip, free_slip };
@@ -131,10 +138,12 @@ struct Solver {
   double viscous_number = 0.125;        // viscous limit: dt ≤ viscous_number · h² / ν
   double force_number = 0.25;           // force limit: dt ≤ force_number · sqrt(h / |a|max)
   double max_density_ratio = 1.5;       // stability band: ρ/ρ0 must stay inside [1/ratio, ratio]
+  double max_mach_number = 1;           // stability band: |v| must stay at or below this multiple of c0
   bool clamp_negative_pressure = true;  // p = max(p, 0): free-surface flows without tension
   double gravity_ramp_time = 0;         // s: gravity rises smoothly from 0 over this time (0: at once)
   double background_pressure = 0;       // Pa, added to the equation of state (closed or periodic flows)
   Shifting shifting = Shifting::none;   // particle shifting after each step (Lind et al. 2012)
+  double artificial_stress = 0;         // ε of Monaghan's (2000) artificial stress; 0: off
 };
 
 struct Time {

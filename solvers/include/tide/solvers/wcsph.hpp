@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -101,6 +102,9 @@ class Wcsph {
   void compute_density_rate(const Vector<D>& gravity);
   void shift_particles(Real dt);
   void check_state();
+  /// What bound the last time step, for an instability message: a step above its stable limit
+  /// is a common cause.
+  std::string time_step_note() const;
 
   scene::Scene scene_;
   Real smoothing_length_;
@@ -116,6 +120,7 @@ class Wcsph {
   FluidWallNeighbors<D> neighbors_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
+  TimeStep last_time_step_;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
   PassTimes pass_times_;

@@ -19,4 +19,7 @@ void replace_atomically(const std::filesystem::path& destination,
 /// Writes `text` to `path` (truncating it); std::runtime_error naming the file on failure.
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 
+/// Replaces `path` atomically with `text`, creating its parent folder if needed.
+void replace_text_atomically(const std::filesystem::path& path, const std::string& text);
+
 }  // namespace tide::io
