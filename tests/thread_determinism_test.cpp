@@ -10,7 +10,7 @@
 #include "tide/core/kernels/cubic_spline.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/simulation.hpp"
 
 namespace tide {
 namespace {
@@ -55,7 +55,8 @@ TEST(ThreadDeterminism, KernelSumPassAndReductionAreBitwiseIdentical) {
 
 // A small 2D dam break, 100 steps: the whole WCSPH pipeline (sort, density, walls, momentum,
 // reductions for the time step) must give the same particle state for any thread count.
-std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod density, scene::Shifting shifting) {
+std::vector<Real> state_after_100_steps(int threads, scene::Scheme scheme, scene::DensityMethod density,
+                                        scene::Shifting shifting) {
   const ThreadLimit limit(threads);
   scene::Scene s;
   s.source = "thread determinism";
@@ -65,12 +66,13 @@ std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod 
   s.fluid.push_back({0, scene::Box{{0, 0, 0}, {0.2, 0.4, 0}}});
   s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {0.6, 0.5, 0}}, true};
   s.domain.box = {{-0.03, -0.03, 0}, {0.63, 1.0, 0}};
+  s.solver.scheme = scheme;
   s.solver.density = density;
   s.solver.shifting = shifting;
-  Wcsph<2> simulation(s);
-  for (int k = 0; k < 100; ++k) simulation.step();
-  const auto& fluid = simulation.fluid();
-  const auto& f = simulation.fluid_fields();
+  const auto simulation = make_simulation<2>(s);
+  for (int k = 0; k < 100; ++k) simulation->step();
+  const auto& fluid = simulation->fluid();
+  const auto& f = simulation->fluid_fields();
   std::vector<Real> state;
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     for (int d = 0; d < 2; ++d) {
@@ -78,19 +80,30 @@ std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod 
       state.push_back(fluid[f.velocity].component[d][i]);
     }
     state.push_back(fluid[f.density][i]);
+    state.push_back(fluid[f.pressure][i]);
     state.push_back(static_cast<Real>(fluid[fluid.id()][i]));
   }
-  state.push_back(simulation.time());
+  state.push_back(simulation->time());
   return state;
 }
 
 TEST(ThreadDeterminism, WcsphStateAfter100StepsIsBitwiseIdentical) {
   for (auto density : {scene::DensityMethod::summation, scene::DensityMethod::continuity}) {
     for (auto shifting : {scene::Shifting::none, scene::Shifting::fickian}) {
-      const auto one = wcsph_state_after_100_steps(1, density, shifting);
-      const auto two = wcsph_state_after_100_steps(2, density, shifting);
+      const auto one = state_after_100_steps(1, scene::Scheme::wcsph, density, shifting);
+      const auto two = state_after_100_steps(2, scene::Scheme::wcsph, density, shifting);
       EXPECT_TRUE(same_bytes(one, two));
     }
+  }
+}
+
+// The incompressible schemes add the Jacobi sweeps, the wall pressure of each sweep and the
+// error reductions that end a solve: 100 steps of the same dam break, bitwise the same.
+TEST(ThreadDeterminism, IncompressibleStateAfter100StepsIsBitwiseIdentical) {
+  for (auto scheme : {scene::Scheme::dfsph, scene::Scheme::iisph}) {
+    const auto one = state_after_100_steps(1, scheme, scene::DensityMethod::summation, scene::Shifting::none);
+    const auto two = state_after_100_steps(2, scheme, scene::DensityMethod::summation, scene::Shifting::none);
+    EXPECT_TRUE(same_bytes(one, two)) << scheme_name(scheme);
   }
 }
 

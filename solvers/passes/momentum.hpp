@@ -7,7 +7,7 @@
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
 
@@ -20,6 +20,18 @@ struct ViscositySettings {
   Real kinematic_viscosity = 0;
   Real smoothing_length = 0;
 };
+
+/// The viscosity settings of a scene, with the velocity scale c of the artificial viscosity.
+inline ViscositySettings viscosity_settings(const scene::Scene& scene, Real sound_speed, Real kinematic_viscosity,
+                                            Real smoothing_length) {
+  return {scene.solver.viscosity,
+          scene.walls.slip == scene::WallSlip::no_slip,
+          static_cast<Real>(scene.solver.alpha),
+          static_cast<Real>(scene.solver.beta),
+          sound_speed,
+          kinematic_viscosity,
+          smoothing_length};
+}
 
 namespace detail {
 
@@ -48,7 +60,9 @@ inline Vector<D> viscous_term(const ViscositySettings& s, Real m_j, Real rho_i, 
 
 /// a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3) + viscous terms + g,
 /// summed over fluid and wall neighbours (walls with their extrapolated p, ρ and velocity).
-template <int D, scene::ViscosityModel Model, class Kernel>
+/// Without `WithPressure`, the non-pressure part only: what an incompressible scheme integrates
+/// before its pressure solve.
+template <int D, scene::ViscosityModel Model, bool WithPressure = true, class Kernel>
 void momentum(const Kernel& kernel, const ViscositySettings& settings, ParticleSet<D>& fluid, const FluidFields<D>& f,
               const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
               const Vector<D>& gravity) {
@@ -72,18 +86,35 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings, ParticleS
       if (j == i) return;
       const Real rho_j = density[j];
       const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
-      a -= (mass[j] * (p_over_rho2_i + pressure[j] / (rho_j * rho_j))) * grad_w;
+      if constexpr (WithPressure) a -= (mass[j] * (p_over_rho2_i + pressure[j] / (rho_j * rho_j))) * grad_w;
       a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
     });
+    if (!WithPressure && !settings.walls_viscous) {
+      acceleration.set(i, a);
+      return;
+    }
     neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
       const Real rho_b = wall_density[b];
       const Vector<D> grad_w = kernel.gradient(x_ib, std::sqrt(r2));
-      a -= (wall_mass[b] * (p_over_rho2_i + wall_pressure[b] / (rho_b * rho_b))) * grad_w;
+      if constexpr (WithPressure) a -= (wall_mass[b] * (p_over_rho2_i + wall_pressure[b] / (rho_b * rho_b))) * grad_w;
       if (settings.walls_viscous)
         a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
     });
     acceleration.set(i, a);
   });
+}
+
+/// momentum() with the viscosity model of `settings`, chosen once per pass.
+template <int D, bool WithPressure = true, class Kernel>
+void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, ParticleSet<D>& fluid,
+                        const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
+                        const WallFields<D>& w, const Vector<D>& gravity) {
+  if (settings.model == scene::ViscosityModel::artificial) {
+    momentum<D, scene::ViscosityModel::artificial, WithPressure>(kernel, settings, fluid, f, neighbors, walls, w,
+                                                                 gravity);
+  } else {
+    momentum<D, scene::ViscosityModel::laminar, WithPressure>(kernel, settings, fluid, f, neighbors, walls, w, gravity);
+  }
 }
 
 }  // namespace tide::passes

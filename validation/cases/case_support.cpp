@@ -16,6 +16,10 @@ void apply_variant(scene::Scene& scene, const Variant& variant) {
   } else if (variant.scheme == "wcsph_continuity") {
     scene.solver.density = scene::DensityMethod::continuity;
     scene.solver.delta_sph = 0.1;
+  } else if (variant.scheme == "dfsph") {
+    scene.solver.scheme = scene::Scheme::dfsph;
+  } else if (variant.scheme == "iisph") {
+    scene.solver.scheme = scene::Scheme::iisph;
   } else {
     throw std::invalid_argument("unknown scheme \"" + variant.scheme + "\"");
   }

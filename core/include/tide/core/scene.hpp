@@ -98,7 +98,9 @@ struct Domain {
   std::array<bool, 3> periodic{};
 };
 
-enum class Scheme { wcsph };
+/// wcsph: weakly compressible, pressure from an equation of state. dfsph, iisph: incompressible,
+/// pressure from an implicit solve (Bender & Koschier 2017; Ihmsen et al. 2014).
+enum class Scheme { wcsph, dfsph, iisph };
 enum class EquationOfState { tait, linear };
 enum class DensityMethod { summation, continuity };
 enum class ViscosityModel { artificial, laminar };
@@ -121,6 +123,11 @@ struct Solver {
   double gravity_ramp_time = 0;         // s: gravity rises smoothly from 0 over this time (0: at once)
   double background_pressure = 0;       // Pa, added to the equation of state (closed or periodic flows)
   Shifting shifting = Shifting::none;   // particle shifting after each step (Lind et al. 2012)
+  // Incompressible schemes (dfsph, iisph) only:
+  double max_density_error = 0.0005;    // pressure solve ends when the mean density error is below this share of ρ0
+  double max_divergence_error = 0.001;  // DFSPH divergence solve: mean error of Δt Dρ/Dt, as a share of ρ0
+  int max_solver_iterations = 100;      // cap per pressure solve
+  int max_failed_solves = 10;           // consecutive steps whose solve missed its threshold before the run stops
 };
 
 struct Time {
