@@ -1,4 +1,5 @@
-// The `tide` command: run, check and describe TideSPH scenes, and run the validation study.
+// The `tide` command: run, check and describe TideSPH scenes, and run the validation study and
+// the stress suite.
 
 #include <CLI/CLI.hpp>
 
@@ -8,6 +9,7 @@
 #include <optional>
 
 #include "run_command.hpp"
+#include "stress_command.hpp"
 #include "tide/core/config.hpp"
 #include "tide/core/parallel.hpp"
 #include "validate_command.hpp"
@@ -81,6 +83,16 @@ int main(int argc, char** argv) {
   validate->add_option("--threads", threads, "number of worker threads (default: all cores)")
       ->check(CLI::PositiveNumber);
 
+  tide::app::StressOptions stress_options;
+  CLI::App* stress = app.add_subcommand(
+      "stress", "run the stress suite (docs/stability.md): tension, impacts, extremes, time step; prints the table");
+  stress->add_option("case", stress_options.cases, "cases to run (default: all; --list names them)");
+  stress->add_flag("--short", stress_options.short_runs, "the short forms of the cases, as the tests run them");
+  stress->add_option("--out", stress_options.output_directory,
+                     "directory for stress.md and stress.csv (default: stress-results)");
+  stress->add_flag("--list", stress_options.list, "list the cases");
+  stress->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
+
   CLI::App* info_command = app.add_subcommand("info", "version, precision, threads and build flags");
   info_command->add_option("--threads", threads, "number of worker threads")->check(CLI::PositiveNumber);
 
@@ -103,6 +115,7 @@ int main(int argc, char** argv) {
       validate_options.command_line = tide::app::quoted_command_line(argc, argv);
       return tide::app::validate(validate_options);
     }
+    if (*stress) return tide::app::stress(stress_options);
     return info();
   } catch (const std::exception& error) {
     std::cerr << "tide: error: " << error.what() << '\n';

@@ -13,8 +13,10 @@
 
 #include "progress.hpp"
 #include "tide/io/frame_writer.hpp"
+#include "tide/io/probe_writer.hpp"
 #include "tide/io/scene_reader.hpp"
 #include "tide/solvers/instability.hpp"
+#include "tide/solvers/probes.hpp"
 #include "tide/solvers/simulation.hpp"
 
 namespace tide::app {
@@ -70,6 +72,51 @@ std::map<std::string, std::string> frame_attributes(const TimeStepTally& since_l
   return attributes;
 }
 
+/// The times of a periodic output: one is due once the time passes the next output time (within
+/// round-off of the sum of intervals).
+class OutputSchedule {
+ public:
+  OutputSchedule(double first, double interval) : next_(first), interval_(interval) {}
+  bool due(double time) const { return time >= next_ - 1e-9 * interval_; }
+  void advance_past(double time) {
+    while (next_ <= time + 1e-9 * interval_) next_ += interval_;
+  }
+
+ private:
+  double next_;
+  double interval_;
+};
+
+/// The scene's probes read every output.probe_interval into <out>/probes.csv; does nothing for a
+/// scene without probes.
+template <int D>
+class ProbeRecorder {
+ public:
+  ProbeRecorder(const scene::Scene& scene, const std::filesystem::path& output_directory)
+      : scene_(scene),
+        writer_(output_directory / "probes.csv", scene),
+        schedule_(scene.time.start, scene.output.probe_interval) {}
+
+  bool active() const { return !scene_.probes.empty(); }
+  const io::ProbeWriter& writer() const { return writer_; }
+
+  /// Adds a row if one is due at the simulation's time.
+  void record(const Simulation<D>& simulation) {
+    if (!active() || !schedule_.due(simulation.time())) return;
+    writer_.add(simulation.time(), read_probes<D>(simulation, scene_.probes));
+    schedule_.advance_past(simulation.time());
+  }
+
+  void write() const {
+    if (active()) writer_.write();
+  }
+
+ private:
+  const scene::Scene& scene_;
+  io::ProbeWriter writer_;
+  OutputSchedule schedule_;
+};
+
 template <int D>
 int run(const scene::Scene& scene, const RunOptions& options, const std::filesystem::path& output_directory) {
   std::unique_ptr<Simulation<D>> simulation;
@@ -97,7 +144,10 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   TimeStepTally run_tally, frame_tally;
   SolveTallies run_solves, frame_solves;
   writer.write(simulation->fluid(), simulation->time(), 0);
-  double next_output = scene.time.start + interval;
+  ProbeRecorder<D> probes(scene, output_directory);
+  probes.record(*simulation);
+  probes.write();
+  OutputSchedule frames(scene.time.start + interval, interval);
   std::filesystem::path last_frame = output_directory;
   try {
     while (simulation->time() < end_time) {
@@ -107,22 +157,25 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
       run_solves.add(report);
       frame_solves.add(report);
       const double time = simulation->time();
-      // A frame is due once the time passes its output time (within round-off of the sum).
-      if (time >= next_output - 1e-9 * interval || time >= end_time) {
+      probes.record(*simulation);
+      if (frames.due(time) || time >= end_time) {
         last_frame = writer.write(simulation->fluid(), time, simulation->step_count(),
                                   frame_attributes(frame_tally, frame_solves));
+        probes.write();
         frame_tally = {};
         frame_solves = {};
-        while (next_output <= time + 1e-9 * interval) next_output += interval;
+        frames.advance_past(time);
       }
       progress.update(time, simulation->step_count());
     }
   } catch (const InstabilityError& error) {
     progress.finish(simulation->time(), simulation->step_count());
+    probes.write();
     std::cerr << "tide: " << error.what() << "\ntide: the last good frame is " << last_frame.string() << '\n';
     return exit_unstable;
   }
   progress.finish(simulation->time(), simulation->step_count());
+  probes.write();
 
   const double wall = progress.wall_seconds();
   const double rate = static_cast<double>(particles) * static_cast<double>(simulation->step_count()) / wall;
@@ -144,12 +197,26 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
       100 * times.neighbor_search / total, 100 * times.density / total, 100 * times.wall_state / total,
       100 * times.momentum / total, 100 * times.pressure_solve / total, 100 * times.integration / total);
   std::printf("  output      %zu frames, %s\n", writer.frames_written(), writer.xdmf_path().string().c_str());
+  if (probes.active())
+    std::printf("  probes      %zu rows, %s\n", probes.writer().rows(), probes.writer().path().string().c_str());
   return exit_ok;
+}
+
+// A scene the reader accepts but that is likely to go unstable: said before any work, without
+// stopping it (stress-testing a limit is a reason to run such a scene).
+void warn_about(const scene::Scene& scene) {
+  if (scene.solver.cfl > max_stable_cfl) {
+    std::cerr << "tide: warning: " << scene.source << ": /solver/cfl = " << scene.solver.cfl << " is above "
+              << max_stable_cfl << ", beyond which explicit WCSPH steps are not known to be stable "
+              << "(docs/stability.md, time step)\n";
+  }
 }
 
 std::optional<scene::Scene> load(const std::filesystem::path& file) {
   try {
-    return io::read_scene_file(file);
+    scene::Scene scene = io::read_scene_file(file);
+    warn_about(scene);
+    return scene;
   } catch (const io::SceneError& error) {
     std::cerr << "tide: " << error.what() << '\n';
     return std::nullopt;

@@ -1,22 +1,18 @@
 #include "tide/io/frame_writer.hpp"
 
-#include <fcntl.h>
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cstdio>
-#include <fstream>
-#include <functional>
 #include <numeric>
 #include <span>
 #include <stdexcept>
 #include <string_view>
-#include <system_error>
 #include <type_traits>
 #include <utility>
+
+#include "tide/io/atomic_file.hpp"
 
 namespace tide::io {
 namespace {
@@ -224,46 +220,6 @@ void write_frame_file(const fs::path& path, const FrameContent<D>& frame, std::v
   }
   write_connectivity(h5, file.get(), frame.set.size());
   h5.check(file.close(), "cannot close the HDF5 file (flushing it failed)");
-}
-
-// ---------------------------------------------------------------------------------------------
-// Files that appear complete or not at all.
-
-/// fsync: without it, a power cut soon after the rename could leave the final name pointing at
-/// blocks that were never written, the very truncated file the rename is there to prevent.
-void flush_to_disk(const fs::path& path) {
-  const int descriptor = ::open(path.c_str(), O_RDONLY);
-  if (descriptor < 0) throw std::system_error(errno, std::generic_category(), path.string() + ": cannot open to flush");
-  const int status = ::fsync(descriptor);
-  const int fsync_errno = errno;
-  ::close(descriptor);
-  if (status != 0) throw std::system_error(fsync_errno, std::generic_category(), path.string() + ": cannot flush");
-}
-
-/// Writes `destination` through `write_to`, which fills a hidden temporary file beside it; the
-/// temporary is flushed and renamed over `destination` (atomic on POSIX), or removed on failure.
-void replace_atomically(const fs::path& destination, const std::function<void(const fs::path&)>& write_to) {
-  const fs::path temporary = destination.parent_path() / ("." + destination.filename().string() + ".tmp");
-  try {
-    write_to(temporary);
-    flush_to_disk(temporary);
-    std::error_code error;
-    fs::rename(temporary, destination, error);
-    if (error)
-      throw std::runtime_error(destination.string() + ": cannot move " + temporary.filename().string() +
-                               " into place: " + error.message());
-  } catch (...) {
-    std::error_code ignored;  // the original failure is the one to report
-    fs::remove(temporary, ignored);
-    throw;
-  }
-}
-
-void write_text_file(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error(path.string() + ": cannot write the file");
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -274,20 +275,8 @@ constexpr std::array<Named<scene::Shifting>, 2> shifting_names{
     {{"none", scene::Shifting::none}, {"fickian", scene::Shifting::fickian}}};
 constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
     {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
-
-/// Without a "domain" key: the container's inner box with room for its wall layers on every
-/// side, and above an open top as much room again as the container is high, so that a splash
-/// stays inside the domain.
-scene::Domain derived_domain(const scene::Container& container, double wall_thickness, int dimension) {
-  scene::Domain domain;
-  for (int d = 0; d < dimension; ++d) {
-    domain.box.min[d] = container.inner.min[d] - wall_thickness;
-    domain.box.max[d] = container.inner.max[d] + wall_thickness;
-  }
-  const int up = dimension - 1;
-  if (container.open_top) domain.box.max[up] += container.inner.max[up] - container.inner.min[up];
-  return domain;
-}
+constexpr std::array<Named<scene::ProbeType>, 2> probe_type_names{
+    {{"pressure", scene::ProbeType::pressure}, {"water_height", scene::ProbeType::water_height}}};
 
 Vec default_gravity(int dimension) {
   Vec gravity{};
@@ -356,7 +345,7 @@ class SceneParser {
   scene::Scene parse(const json& document) {
     const Node root{&document, ""};
     expect_object(root, {"dimension", "particle_spacing", "kernel", "domain", "materials", "fluid", "walls", "gravity",
-                         "solver", "time", "output"});
+                         "solver", "time", "output", "probes"});
     scene::Scene scene;
     scene.source = file_;
     scene.dimension = dimension_ = read_dimension(child(root, "dimension"));
@@ -371,7 +360,9 @@ class SceneParser {
     read_optional(root, "gravity", scene.gravity);
     if (const Node solver = child(root, "solver"); solver.present()) read_solver(solver, scene.solver);
     scene.time = read_time(child(root, "time"));
-    if (const Node output = child(root, "output"); output.present()) scene.output = read_output(output);
+    scene.output.probe_interval = scene.time.output_interval;
+    if (const Node output = child(root, "output"); output.present()) read_output(output, scene.output);
+    if (const Node probes = child(root, "probes"); probes.present()) scene.probes = read_probes(probes, scene.domain);
     check_geometry(scene);
     return scene;
   }
@@ -614,15 +605,24 @@ class SceneParser {
     return fluid;
   }
 
-  /// A uniform velocity [vx, vy(, vz)] or a named field {"taylor_green": {...}}.
-  std::variant<Vec, scene::TaylorGreenVelocity> initial_velocity(const Node& node) const {
+  /// A uniform velocity [vx, vy(, vz)] or a named field: {"taylor_green": {...}} or
+  /// {"rotation": {...}}, both two-dimensional.
+  std::variant<Vec, scene::TaylorGreenVelocity, scene::RigidRotation> initial_velocity(const Node& node) const {
     if (node.value->is_array()) return vector(node);
-    if (!node.value->is_object()) {
-      fail(node, "a velocity array of " + std::to_string(dimension_) + " numbers or {\"taylor_green\": {...}}");
+    const std::string expected = "a velocity array of " + std::to_string(dimension_) +
+                                 " numbers, {\"taylor_green\": {...}} or {\"rotation\": {...}}";
+    if (!node.value->is_object()) fail(node, expected);
+    expect_object(node, {"taylor_green", "rotation"});
+    if (node.value->size() != 1) fail(node, expected);
+    if (const Node field = child(node, "rotation"); field.present()) {
+      if (dimension_ != 2) fail(field, "a 2D scene (the rotation field turns about the z axis)");
+      expect_object(field, {"centre", "angular_velocity"});
+      scene::RigidRotation rotation;
+      rotation.centre = vector(child(field, "centre"));
+      read_optional(field, "angular_velocity", rotation.angular_velocity, any_number);
+      return rotation;
     }
-    expect_object(node, {"taylor_green"});
     const Node field = child(node, "taylor_green");
-    if (!field.present()) fail(node, "an object with the key \"taylor_green\"");
     if (dimension_ != 2) fail(field, "a 2D scene (the Taylor-Green field is two-dimensional)");
     expect_object(field, {"amplitude", "length"});
     scene::TaylorGreenVelocity taylor_green;
@@ -695,7 +695,7 @@ class SceneParser {
              "an object with the keys \"min\", \"max\", \"periodic\" (only a scene with a wall container, "
              "from which the domain is derived, may leave it out)");
       }
-      return derived_domain(*walls.container, walls.layers * spacing_, dimension_);
+      return scene::domain_around(*walls.container, walls.layers * spacing_, dimension_);
     }
     expect_object(node, {"min", "max", "periodic"});
     scene::Domain domain{corners(node)};
@@ -720,6 +720,8 @@ class SceneParser {
                          "gravity_ramp_time",
                          "background_pressure",
                          "shifting",
+                         "artificial_stress",
+                         "max_mach_number",
                          "max_density_error",
                          "max_divergence_error",
                          "max_solver_iterations",
@@ -732,10 +734,11 @@ class SceneParser {
     read_optional(node, "viscosity", solver.viscosity, viscosity_model_names);
     read_optional(node, "alpha", solver.alpha, non_negative);
     read_optional(node, "beta", solver.beta, non_negative);
-    read_optional(node, "cfl", solver.cfl, in_unit_interval);
+    read_optional(node, "cfl", solver.cfl, positive);
     read_optional(node, "viscous_number", solver.viscous_number, positive);
     read_optional(node, "force_number", solver.force_number, positive);
     read_optional(node, "max_density_ratio", solver.max_density_ratio, above_one);
+    read_optional(node, "max_mach_number", solver.max_mach_number, positive);
     if (const Node clamp = child(node, "clamp_negative_pressure"); clamp.present()) {
       solver.clamp_negative_pressure = boolean(clamp);
     }
@@ -746,6 +749,7 @@ class SceneParser {
     read_optional(node, "max_divergence_error", solver.max_divergence_error, in_unit_interval);
     read_optional(node, "max_solver_iterations", solver.max_solver_iterations);
     read_optional(node, "max_failed_solves", solver.max_failed_solves);
+    read_optional(node, "artificial_stress", solver.artificial_stress, non_negative);
   }
 
   scene::Time read_time(const Node& node) const {
@@ -758,16 +762,51 @@ class SceneParser {
     return time;
   }
 
-  scene::Output read_output(const Node& node) const {
-    expect_object(node, {"fields"});
-    scene::Output output;
+  void read_output(const Node& node, scene::Output& output) const {
+    expect_object(node, {"fields", "probe_interval"});
     if (const Node fields = child(node, "fields"); fields.present()) {
       output.fields.clear();
       for (const Node& entry : elements(fields, 1, "a non-empty array of field names")) {
         output.fields.push_back(field_name(entry, output.fields));
       }
     }
-    return output;
+    read_optional(node, "probe_interval", output.probe_interval, positive);
+  }
+
+  std::vector<scene::Probe> read_probes(const Node& node, const scene::Domain& domain) const {
+    std::vector<scene::Probe> probes;
+    for (const Node& entry : elements(node, 0, "an array of probes")) {
+      expect_object(entry, {"name", "type", "position"});
+      scene::Probe probe;
+      probe.name = probe_name(child(entry, "name"), probes);
+      probe.type = choice(child(entry, "type"), probe_type_names);
+      const Node position = child(entry, "position");
+      probe.position = vector(position);
+      for (int d = 0; d < dimension_; ++d) {
+        if (probe.position[d] < domain.box.min[d] - tolerance() ||
+            probe.position[d] > domain.box.max[d] + tolerance()) {
+          fail(element(position, d), "a number in [" + format_number(domain.box.min[d]) + ", " +
+                                         format_number(domain.box.max[d]) + "] (the domain's extent on axis " +
+                                         std::to_string(d) + ")");
+        }
+      }
+      probes.push_back(probe);
+    }
+    return probes;
+  }
+
+  /// A probe's name heads its column of probes.csv, so it must need no CSV quoting.
+  std::string probe_name(const Node& node, const std::vector<scene::Probe>& earlier) const {
+    const std::string expected =
+        "a name of letters, digits, '_', '-' and '.', other than \"time\", that no earlier probe has";
+    const std::string name = node.present() && node.value->is_string() ? node.value->get<std::string>() : "";
+    const auto allowed = [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-' || c == '.'; };
+    const auto same_name = [&](const scene::Probe& other) { return other.name == name; };
+    if (name.empty() || name == "time" || !std::all_of(name.begin(), name.end(), allowed) ||
+        std::any_of(earlier.begin(), earlier.end(), same_name)) {
+      fail(node, expected);
+    }
+    return name;
   }
 
   std::string field_name(const Node& node, const std::vector<std::string>& earlier) const {

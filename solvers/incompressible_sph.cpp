@@ -76,7 +76,8 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   // The first solve starts from the pressure of the fluid at rest: a Jacobi sweep carries
   // information about one kernel support, so from zero a deep column would need of the order of
   // (depth / h)² sweeps to take its own weight.
-  setup::hydrostatic_pressure<D>(fluid_, gravity_, static_cast<Real>(scene.particle_spacing), rest_density_,
+  setup::hydrostatic_pressure<D>(fluid_, setup::hydrostatic_part<D>(scene_, gravity_),
+                                 static_cast<Real>(scene.particle_spacing), rest_density_,
                                  fluid_[fluid_fields_.pressure]);
 
   time_step_rule_.smoothing_length = smoothing_length_;
@@ -124,8 +125,8 @@ void IncompressibleSph<D>::compute_non_pressure_acceleration() {
           passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, nullptr);
           lap(clock, pass_times_.wall_state);
         }
-        passes::fluid_acceleration<D, false>(kernel, viscosity, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
-                                             gravity_);
+        passes::fluid_acceleration<D, false>(kernel, viscosity, {}, fluid_, fluid_fields_, neighbors_, walls_,
+                                             wall_fields_, gravity_);
         lap(clock, pass_times_.momentum);
       },
       kernel_);
@@ -262,10 +263,11 @@ void IncompressibleSph<D>::check_state() {
   const Real ratio = static_cast<Real>(scene_.solver.max_density_ratio);
   StateLimits limits;
   limits.max_density = ratio * rest_density_;
-  limits.density_band = "above " + std::to_string(ratio) + " rho0";
-  limits.max_speed = reference_sound_speed_;
-  limits.speed_bound = "faster than c0 = " + std::to_string(reference_sound_speed_) +
-                       " m/s, ten times the material's expected maximum speed";
+  limits.density_band = "above " + setup::format_number(ratio) + " rho0, solver.max_density_ratio";
+  limits.max_speed = static_cast<Real>(scene_.solver.max_mach_number) * reference_sound_speed_;
+  limits.speed_bound = "faster than " + setup::format_number(scene_.solver.max_mach_number) +
+                       " x c0 = " + setup::format_number(limits.max_speed) +
+                       " m/s (c0: the material's sound_speed, else 10 max_speed), solver.max_mach_number";
   const StateMaxima maxima = check_fluid_state<D>(fluid_, fluid_fields_, limits, step_count_, time_);
   max_speed_ = maxima.speed;
   max_acceleration_ = maxima.acceleration;

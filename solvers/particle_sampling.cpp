@@ -96,6 +96,14 @@ bool made_by_container(const Vector<D>& p, const scene::Container& container, Re
 template <int D>
 Vector<D> initial_velocity(const scene::FluidBlock& block, const Vector<D>& x) {
   if (const auto* uniform = std::get_if<scene::Vec>(&block.velocity)) return to_vector<D>(*uniform);
+  if (const auto* rotation = std::get_if<scene::RigidRotation>(&block.velocity)) {
+    const Vector<D> r = x - to_vector<D>(rotation->centre);
+    const Real omega = static_cast<Real>(rotation->angular_velocity);
+    Vector<D> v = Vector<D>::Zero();
+    v[0] = -omega * r[1];
+    v[1] = omega * r[0];
+    return v;
+  }
   const auto& vortex = std::get<scene::TaylorGreenVelocity>(block.velocity);
   const Real k = Real(2 * std::numbers::pi / vortex.length);
   const Real u = static_cast<Real>(vortex.amplitude);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -155,6 +156,12 @@ Vector<D> gravity_at(const scene::Scene& scene, double t) {
   if (!(ramp_time > 0) || elapsed >= ramp_time) return gravity;
   const double share = 0.5 * (std::sin(std::numbers::pi * (elapsed / ramp_time - 0.5)) + 1);
   return static_cast<Real>(share) * gravity;
+}
+
+std::string format_number(double value) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%g", value);
+  return text.data();
 }
 
 template GridDomain<2> grid_domain<2>(const scene::Scene&);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <span>
+#include <string>
 
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -50,6 +51,17 @@ void hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity,
 template <int D>
 Vector<D> gravity_at(const scene::Scene& scene, double t);
 
+/// The part of a body force that a fluid at rest balances with a pressure gradient: its
+/// components along the closed (non-periodic) axes. Along a periodic axis the pressure is
+/// periodic too: a body force there (a periodic channel's driving force) builds no hydrostatic
+/// pressure.
+template <int D>
+Vector<D> hydrostatic_part(const scene::Scene& scene, Vector<D> body_force) {
+  for (int d = 0; d < D; ++d)
+    if (scene.domain.periodic[d]) body_force[d] = 0;
+  return body_force;
+}
+
 /// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
 template <int D>
 double bytes_per_particle(const ParticleSet<D>& fluid, const ParticleSet<D>& walls,
@@ -59,6 +71,9 @@ double bytes_per_particle(const ParticleSet<D>& fluid, const ParticleSet<D>& wal
       static_cast<double>(fluid.bytes_per_particle() * fluid.size() + walls.bytes_per_particle() * walls.size());
   return (fields + static_cast<double>(neighbors.bytes())) / fluid_count;
 }
+
+/// Six significant digits, for messages.
+std::string format_number(double value);
 
 /// Adds the seconds since `start` to `total` and restarts the clock.
 inline void lap(std::chrono::steady_clock::time_point& start, double& total) {

@@ -50,15 +50,16 @@ StateMaxima check_fluid_state(const ParticleSet<D>& fluid, const FluidFields<D>&
 
   const std::size_t i = summary.bad_particle;
   const Index id = fluid[fluid.id()][i];
+  const std::string note = limits.note ? limits.note() : std::string();
   if (!std::isfinite(x[i].squaredNorm()))
-    throw InstabilityError(id, "position", static_cast<double>(x[i].norm()), step, time, "not finite");
+    throw InstabilityError(id, "position", static_cast<double>(x[i].norm()), step, time, "not finite", note);
   if (!std::isfinite(v[i].squaredNorm()))
-    throw InstabilityError(id, "velocity", static_cast<double>(v[i].norm()), step, time, "not finite");
+    throw InstabilityError(id, "velocity", static_cast<double>(v[i].norm()), step, time, "not finite", note);
   if (!std::isfinite(a[i].squaredNorm()))
-    throw InstabilityError(id, "acceleration", static_cast<double>(a[i].norm()), step, time, "not finite");
+    throw InstabilityError(id, "acceleration", static_cast<double>(a[i].norm()), step, time, "not finite", note);
   if (!std::isfinite(density[i]) || density[i] > limits.max_density || density[i] < limits.min_density)
-    throw InstabilityError(id, "density", static_cast<double>(density[i]), step, time, limits.density_band);
-  throw InstabilityError(id, "speed", static_cast<double>(v[i].norm()), step, time, limits.speed_bound);
+    throw InstabilityError(id, "density", static_cast<double>(density[i]), step, time, limits.density_band, note);
+  throw InstabilityError(id, "speed", static_cast<double>(v[i].norm()), step, time, limits.speed_bound, note);
 }
 
 template StateMaxima check_fluid_state<2>(const ParticleSet<2>&, const FluidFields<2>&, const StateLimits&,

@@ -4,6 +4,7 @@
 // time step), and the first particle whose state leaves the bounds of a meaningful run.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "tide/core/particle_set.hpp"
@@ -16,7 +17,8 @@ struct StateLimits {
   Real max_density = 0;
   std::string density_band;  // the band in words, for the message
   Real max_speed = 0;
-  std::string speed_bound;  // the speed bound in words, for the message
+  std::string speed_bound;            // the speed bound in words, for the message
+  std::function<std::string()> note;  // when set, a sentence added to the message (asked only on failure)
 };
 
 struct StateMaxima {

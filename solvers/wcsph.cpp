@@ -3,6 +3,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -21,6 +22,7 @@
 
 namespace tide {
 
+using setup::format_number;
 using setup::lap;
 
 template <int D>
@@ -63,11 +65,16 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
 }
 
 template <int D>
+Vector<D> Wcsph<D>::gravity() const {
+  return setup::gravity_at<D>(scene_, time_);
+}
+
+template <int D>
 void Wcsph<D>::set_hydrostatic_density() {
   // Continuity density starts from the fluid at rest under gravity: ρ from the equation of state
   // at the hydrostatic pressure (plus the background pressure).
   auto density = fluid_[fluid_fields_.density];
-  setup::hydrostatic_pressure<D>(fluid_, setup::gravity_at<D>(scene_, time_),
+  setup::hydrostatic_pressure<D>(fluid_, setup::hydrostatic_part<D>(scene_, gravity()),
                                  static_cast<Real>(scene_.particle_spacing), eos_.rest_density(), density);
   const Real surface_pressure = eos_.pressure(eos_.rest_density());  // the background pressure
   for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] = eos_.density(surface_pressure + density[i]); });
@@ -77,6 +84,10 @@ template <int D>
 void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
   const passes::ViscositySettings viscosity =
       passes::viscosity_settings(scene_, eos_.sound_speed(), kinematic_viscosity_, smoothing_length_);
+  const passes::ArtificialStressSettings stress{
+      static_cast<Real>(scene_.solver.artificial_stress),
+      std::visit([&](const auto& kernel) { return 1 / kernel.value(static_cast<Real>(scene_.particle_spacing)); },
+                 kernel_)};
   const passes::WallPressureExtrapolation<D> wall_pressure{&eos_, gravity, scene_.solver.clamp_negative_pressure};
   auto pressure = fluid_[fluid_fields_.pressure];
   const auto set_pressure = [&, clamp = scene_.solver.clamp_negative_pressure](std::size_t i, Real rho) {
@@ -95,8 +106,8 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
         lap(clock, pass_times_.density);
         passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, &wall_pressure);
         lap(clock, pass_times_.wall_state);
-        passes::fluid_acceleration<D>(kernel, viscosity, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
-                                      gravity);
+        passes::fluid_acceleration<D>(kernel, viscosity, stress, fluid_, fluid_fields_, neighbors_, walls_,
+                                      wall_fields_, gravity);
         lap(clock, pass_times_.momentum);
       },
       kernel_);
@@ -118,6 +129,7 @@ template <int D>
 StepReport Wcsph<D>::step() {
   StepReport report;
   report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
+  last_time_step_ = report.time_step;
   const Real dt = report.time_step.dt;
   auto clock = std::chrono::steady_clock::now();
   {
@@ -136,7 +148,7 @@ StepReport Wcsph<D>::step() {
   lap(clock, pass_times_.neighbor_search);
   const Vector<D> gravity = setup::gravity_at<D>(scene_, time_ + dt);
   if (scene_.solver.density == scene::DensityMethod::continuity) {
-    compute_density_rate(gravity);
+    compute_density_rate(setup::hydrostatic_part<D>(scene_, gravity));
     auto density = fluid_[fluid_fields_.density];
     const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
     for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] += dt * rate[i]; });
@@ -191,12 +203,32 @@ void Wcsph<D>::check_state() {
   StateLimits limits;
   limits.min_density = scene_.solver.density == scene::DensityMethod::continuity ? rho0 / ratio : Real(0);
   limits.max_density = ratio * rho0;
-  limits.density_band = "outside [rho0/" + std::to_string(ratio) + ", " + std::to_string(ratio) + " rho0]";
-  limits.max_speed = eos_.sound_speed();
-  limits.speed_bound = "faster than the speed of sound c0 = " + std::to_string(eos_.sound_speed()) + " m/s";
+  limits.density_band =
+      "outside [rho0/" + format_number(ratio) + ", " + format_number(ratio) + " rho0], solver.max_density_ratio";
+  limits.max_speed = static_cast<Real>(scene_.solver.max_mach_number) * eos_.sound_speed();
+  limits.speed_bound = "faster than " + format_number(scene_.solver.max_mach_number) +
+                       " x c0 = " + format_number(limits.max_speed) + " m/s, solver.max_mach_number";
+  limits.note = [this] { return time_step_note(); };
   const StateMaxima maxima = check_fluid_state<D>(fluid_, fluid_fields_, limits, step_count_, time_);
   max_speed_ = maxima.speed;
   max_acceleration_ = maxima.acceleration;
+}
+
+template <int D>
+std::string Wcsph<D>::time_step_note() const {
+  if (step_count_ == 0) return "";
+  const TimeStepRule& rule = time_step_rule_;
+  std::string note = "the last time step was dt = " + format_number(last_time_step_.dt) + " s, set by the " +
+                     std::string(time_step_limit_name(last_time_step_.limit)) +
+                     " limit (solver.cfl = " + format_number(rule.cfl);
+  if (rule.kinematic_viscosity > 0) note += ", solver.viscous_number = " + format_number(rule.viscous_number);
+  note += ", solver.force_number = " + format_number(rule.force_number) + ")";
+  if (rule.cfl > max_stable_cfl) {
+    note += "; solver.cfl above " + format_number(max_stable_cfl) +
+            " is beyond the stable limit of the explicit integration: the time step is the likely cause, lower "
+            "solver.cfl";
+  }
+  return note;
 }
 
 template class Wcsph<2>;

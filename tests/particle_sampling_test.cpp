@@ -113,5 +113,13 @@ TEST(ParticleSampling, TaylorGreenInitialVelocity) {
   EXPECT_NEAR(v.y(), 3 * std::sin(k * 0.25) * std::cos(k * 0.125), 1e-6);
 }
 
+// A rigid rotation at ω about c: v = ω ẑ × (x − c), u = −ω (y − y_c), v = ω (x − x_c).
+TEST(ParticleSampling, RigidRotationInitialVelocity) {
+  scene::FluidBlock block{0, scene::Box{{0, 0, 0}, {2, 2, 0}}, scene::RigidRotation{{1, 0.5, 0}, 2}};
+  const Vector<2> v = initial_velocity<2>(block, Vector<2>(1.25, 1.0));
+  EXPECT_NEAR(v.x(), -2 * 0.5, 1e-6);
+  EXPECT_NEAR(v.y(), 2 * 0.25, 1e-6);
+}
+
 }  // namespace
 }  // namespace tide

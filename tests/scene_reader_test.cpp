@@ -36,7 +36,9 @@ json full_2d_scene() {
                "viscous_number": 0.1, "force_number": 0.2, "max_density_ratio": 1.2,
                "gravity_ramp_time": 0.25},
     "time": {"start": 0.5, "end": 2.0, "output_interval": 0.02},
-    "output": {"fields": ["position", "velocity", "id", "mass"]}
+    "output": {"fields": ["position", "velocity", "id", "mass"], "probe_interval": 0.001},
+    "probes": [{"name": "P1", "type": "pressure", "position": [1.6, 0.12]},
+               {"name": "H1", "type": "water_height", "position": [0.8, 0]}]
   })");
 }
 
@@ -155,6 +157,14 @@ TEST(SceneReader, Full2DSceneRoundTrips) {
   EXPECT_EQ(s.time.end, 2.0);
   EXPECT_EQ(s.time.output_interval, 0.02);
   EXPECT_EQ(s.output.fields, (std::vector<std::string>{"position", "velocity", "id", "mass"}));
+  EXPECT_EQ(s.output.probe_interval, 0.001);
+  ASSERT_EQ(s.probes.size(), 2u);
+  EXPECT_EQ(s.probes[0].name, "P1");
+  EXPECT_EQ(s.probes[0].type, scene::ProbeType::pressure);
+  EXPECT_EQ(s.probes[0].position, vec(1.6, 0.12));
+  EXPECT_EQ(s.probes[1].name, "H1");
+  EXPECT_EQ(s.probes[1].type, scene::ProbeType::water_height);
+  EXPECT_EQ(s.probes[1].position, vec(0.8, 0));
 }
 
 TEST(SceneReader, Full3DSceneRoundTrips) {
@@ -224,6 +234,8 @@ TEST(SceneReader, DefaultsComeFromTheSceneModel) {
   EXPECT_EQ(s.time.start, model.time.start);
   EXPECT_EQ(s.time.output_interval, model.time.output_interval);
   EXPECT_EQ(s.output.fields, model.output.fields);
+  EXPECT_TRUE(s.probes.empty());
+  EXPECT_EQ(s.output.probe_interval, s.time.output_interval);  // probes are read with the frames
 }
 
 TEST(SceneReader, ThreeDimensionalGravityPointsDownTheLastAxis) {
@@ -289,11 +301,45 @@ TEST(SceneReader, ReadsTheIncompressibleSchemesAndTheirSolverKeys) {
   }
 }
 
+TEST(SceneReader, ReadsARigidRotation) {
+  const json document =
+      with(full_2d_scene(), "/fluid/0/velocity", {{"rotation", {{"centre", {0.2, 0.4}}, {"angular_velocity", -1.5}}}});
+  const auto& rotation = std::get<scene::RigidRotation>(parse(document).fluid[0].velocity);
+  EXPECT_EQ(rotation.centre, vec(0.2, 0.4));
+  EXPECT_EQ(rotation.angular_velocity, -1.5);
+}
+
+TEST(SceneReader, ReadsTheStabilityOptions) {
+  json document = with(full_2d_scene(), "/solver/artificial_stress", 0.2);
+  document = with(document, "/solver/max_mach_number", 0.5);
+  document = with(document, "/solver/cfl", 2.5);  // accepted; `tide run` warns above 1
+  const scene::Scene s = parse(document);
+  EXPECT_EQ(s.solver.artificial_stress, 0.2);
+  EXPECT_EQ(s.solver.max_mach_number, 0.5);
+  EXPECT_EQ(s.solver.cfl, 2.5);
+  const scene::Scene defaults = parse(minimal_scene());
+  EXPECT_EQ(defaults.solver.artificial_stress, 0);  // off
+  EXPECT_EQ(defaults.solver.max_mach_number, 1);
+}
+
+TEST(SceneReaderRefuses, StabilityOptionsOutOfRange) {
+  expect_refused(with(full_2d_scene(), "/solver/artificial_stress", -0.1), "/solver/artificial_stress",
+                 "a number >= 0");
+  expect_refused(with(full_2d_scene(), "/solver/artificial_stress", "on"), "/solver/artificial_stress",
+                 "a number >= 0");
+  expect_refused(with(full_2d_scene(), "/solver/max_mach_number", 0), "/solver/max_mach_number", "a number > 0");
+  expect_refused(with(full_2d_scene(), "/solver/cfl", 0), "/solver/cfl", "a number > 0");
+}
+
 TEST(SceneReaderRefuses, MalformedVelocities) {
-  expect_refused(with(full_2d_scene(), "/fluid/0/velocity", "fast"), "/fluid/0/velocity",
-                 "a velocity array of 2 numbers or {\"taylor_green\": {...}}");
+  const std::string velocity_expectation =
+      "a velocity array of 2 numbers, {\"taylor_green\": {...}} or {\"rotation\": {...}}";
+  expect_refused(with(full_2d_scene(), "/fluid/0/velocity", "fast"), "/fluid/0/velocity", velocity_expectation);
   expect_refused(with(full_2d_scene(), "/fluid/0/velocity", {{"vortex", 1}}), "/fluid/0/velocity/vortex",
-                 "one of the keys \"taylor_green\"");
+                 "one of the keys \"taylor_green\", \"rotation\"");
+  expect_refused(with(full_2d_scene(), "/fluid/0/velocity", json::object()), "/fluid/0/velocity", velocity_expectation);
+  expect_refused(with(full_2d_scene(), "/fluid/0/velocity/rotation", {{"angular_velocity", 1}}),
+                 "/fluid/0/velocity/rotation/centre", "an array of 2 numbers [x, y]");
   expect_refused(with(full_2d_scene(), "/walls/obstacles/0/velocity", {1, 0, 0}), "/walls/obstacles/0/velocity",
                  "an array of 2 numbers [x, y]");
 }
@@ -341,10 +387,10 @@ TEST(SceneReader, ReadsAFileAndNamesItInErrors) {
 
 TEST(SceneReaderRefuses, WrongTypeWithTheExactMessage) {
   const SceneError error = error_of(with(full_2d_scene(), "/solver/cfl", "fast").dump());
-  EXPECT_STREQ(error.what(), R"(dam.json: /solver/cfl: expected a number in (0, 1], got "fast")");
+  EXPECT_STREQ(error.what(), R"(dam.json: /solver/cfl: expected a number > 0, got "fast")");
   EXPECT_EQ(error.file(), "dam.json");
   EXPECT_EQ(error.key_path(), "/solver/cfl");
-  EXPECT_EQ(error.expected(), "a number in (0, 1]");
+  EXPECT_EQ(error.expected(), "a number > 0");
   EXPECT_EQ(error.found(), R"("fast")");
 }
 
@@ -552,6 +598,23 @@ TEST(SceneReaderRefuses, ShapesThatAreNotExactlyOne) {
                  R"(exactly one shape key of "box", "ball", "plane")");
   expect_refused(with(full_2d_scene(), "/walls/obstacles/2/plane/normal", {0, 0}), "/walls/obstacles/2/plane/normal",
                  "a non-zero vector");
+}
+
+TEST(SceneReaderRefuses, BadProbes) {
+  expect_refused(with(full_2d_scene(), "/probes/0/type", "velocity"), "/probes/0/type",
+                 R"(one of "pressure", "water_height")");
+  expect_refused(without(full_2d_scene(), "/probes/1/position"), "/probes/1/position", "an array of 2 numbers");
+  expect_refused(with(full_2d_scene(), "/probes/0/position/1", 2.5), "/probes/0/position/1",
+                 "a number in [-0.1, 2] (the domain's extent on axis 1)");
+  expect_refused(with(full_2d_scene(), "/probes/1/name", "P1"), "/probes/1/name", "that no earlier probe has");
+  for (const json& name : {json("P 1"), json("a,b"), json(""), json("time"), json(3)}) {
+    expect_refused(with(full_2d_scene(), "/probes/0/name", name), "/probes/0/name",
+                   "a name of letters, digits, '_', '-' and '.'");
+  }
+  expect_refused(with(full_2d_scene(), "/probes/0/where", 1), "/probes/0/where",
+                 R"(one of the keys "name", "type", "position")");
+  expect_refused(with(full_2d_scene(), "/probes", json::object()), "/probes", "an array of probes");
+  expect_refused(with(full_2d_scene(), "/output/probe_interval", 0), "/output/probe_interval", "a number > 0");
 }
 
 }  // namespace

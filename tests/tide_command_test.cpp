@@ -154,6 +154,36 @@ TEST_F(TideCommand, UntilOverridesTheEndTime) {
   EXPECT_FALSE(fs::exists(out / "frames_000003.h5"));
 }
 
+// A scene with probes gets <out>/probes.csv: the header naming the scene and each probe, then a
+// row at the start and one per probe interval.
+TEST_F(TideCommand, RunWritesProbes) {
+  const fs::path out = directory_ / "out";
+  const fs::path scene =
+      write_scene(R"("time")", R"("probes": [{"name": "P1", "type": "pressure", "position": [0.4, 0.01]},
+                {"name": "H1", "type": "water_height", "position": [0.05, 0]}],
+  "output": {"probe_interval": 0.005},
+  "time")");
+  const CommandResult result = run_tide("run --out " + out.string() + " " + scene.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("probes.csv"), std::string::npos) << result.output;
+  std::ifstream csv(out / "probes.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_GE(lines.size(), 5u);
+  EXPECT_EQ(lines[0], "# TideSPH probes of scene " + scene.string());
+  EXPECT_EQ(lines[1], "# P1: pressure (Pa) at [0.4, 0.01]");
+  EXPECT_EQ(lines[2], "# H1: water_height (m) above [0.05, 0]");
+  EXPECT_EQ(lines[3], "time,P1,H1");
+  EXPECT_EQ(lines.size(), 4u + 11u);  // t = 0, 0.005, ..., 0.05
+  std::istringstream first(lines[4]);
+  double time = -1, pressure = -1, height = -1;
+  char comma = 0;
+  first >> time >> comma >> pressure >> comma >> height;
+  EXPECT_EQ(time, 0);
+  EXPECT_EQ(pressure, 0);              // the water has not reached the far wall
+  EXPECT_NEAR(height, 0.2, 0.01 / 2);  // the column, 0.2 m high
+}
+
 // c0 = 0.2 m/s for a fluid that falls at ~0.5 m/s: the run leaves the weakly compressible
 // regime, stops with exit code 3 and a diagnosis, and the frames written before stay readable.
 TEST_F(TideCommand, UnstableRunExitsWithThreeAndKeepsTheLastGoodFrame) {
@@ -163,12 +193,53 @@ TEST_F(TideCommand, UnstableRunExitsWithThreeAndKeepsTheLastGoodFrame) {
   ASSERT_EQ(result.exit_code, 3) << result.output;
   EXPECT_NE(result.output.find("unstable run: particle"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("at step"), std::string::npos) << result.output;
-  EXPECT_NE(result.output.find("last good frame"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("the last time step was dt = "), std::string::npos) << result.output;
   const io::Frame first = io::read_frame(out / "frames_000000.h5");
   EXPECT_EQ(first.step, 0u);
+  // The frame the message names is on disk, whole, and from before the reported step.
+  const std::string marker = "the last good frame is ";
+  const auto at = result.output.find(marker);
+  ASSERT_NE(at, std::string::npos) << result.output;
+  const auto end = result.output.find('\n', at);
+  const fs::path last_good = result.output.substr(at + marker.size(), end - at - marker.size());
+  const io::Frame last = io::read_frame(last_good);
+  const auto step_at = result.output.find("at step ");
+  ASSERT_NE(step_at, std::string::npos);
+  EXPECT_LT(last.step, std::stoull(result.output.substr(step_at + 8))) << result.output;
   for (const auto& entry : fs::directory_iterator(out)) {
     EXPECT_EQ(entry.path().extension(), entry.path().extension() == ".xdmf" ? ".xdmf" : ".h5") << entry.path();
   }
+}
+
+// A cfl above 1 is accepted (the stress suite runs such scenes) with a warning before the run.
+TEST_F(TideCommand, CflAboveOneIsWarnedAbout) {
+  const fs::path scene = write_scene(R"("dimension": 2,)", R"("dimension": 2, "solver": {"cfl": 2},)");
+  const CommandResult result = run_tide("check " + scene.string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("warning"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("/solver/cfl = 2 is above 1"), std::string::npos) << result.output;
+}
+
+TEST_F(TideCommand, StressRefusesUnknownCasesListingTheValidOnes) {
+  const CommandResult result = run_tide("stress no_such_case");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("unknown case 'no_such_case'"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("tension"), std::string::npos) << result.output;
+}
+
+// One quick case end to end: the printed table and the CSV have its row.
+TEST_F(TideCommand, StressWritesTheTable) {
+  const fs::path out = directory_ / "stress";
+  const CommandResult result = run_tide("stress conservation --short --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("| conservation |"), std::string::npos) << result.output;
+  std::ifstream csv(out / "stress.csv");
+  std::string header, row;
+  ASSERT_TRUE(std::getline(csv, header) && std::getline(csv, row)) << result.output;
+  EXPECT_EQ(header.rfind("case,settings,outcome,metric,value,bound_relation,bound_limit", 0), 0u) << header;
+  EXPECT_EQ(row.rfind("conservation,", 0), 0u) << row;
+  EXPECT_NE(row.find(",pass,max_relative_energy_change,"), std::string::npos) << row;
+  EXPECT_TRUE(fs::exists(out / "stress.md"));
 }
 
 TEST_F(TideCommand, InfoNamesVersionAndPrecision) {

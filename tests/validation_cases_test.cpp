@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "tide/validation/case.hpp"
@@ -46,6 +47,17 @@ TEST(ValidationCases, PoiseuilleStartUp) {
   EXPECT_LT(metric(run_at_test_resolution("poiseuille"), "velocity_l2_error"), 0.06);
 }
 
+// The same with continuity density: the driving force lies along the periodic axis, where it
+// builds no hydrostatic pressure (the initial density once took it for gravity and started the
+// channel at 1.5 ρ0). 10 particles across: L2 error 0.048.
+TEST(ValidationCases, PoiseuilleStartUpWithContinuityDensity) {
+  const Case* c = find_case("poiseuille");
+  ASSERT_NE(c, nullptr);
+  EXPECT_LT(
+      metric(c->run(c->test_resolution, Variant{"wcsph_continuity", KernelType::wendland_c2}), "velocity_l2_error"),
+      0.06);
+}
+
 // 10 particles across: L2 error 0.0105 averaged over the five times.
 TEST(ValidationCases, CouetteStartUp) {
   EXPECT_LT(metric(run_at_test_resolution("couette"), "velocity_l2_error"), 0.014);
@@ -82,6 +94,59 @@ TEST(ValidationCases, DamBreakFrontFollowsTheExperimentsIncompressible) {
     EXPECT_LE(metric(r, "start_offset"), 0.4) << scheme;
     EXPECT_LE(metric(r, "front_error_after_offset"), 0.04) << scheme;
   }
+}
+
+// H/Δx = 40 (3200 particles, 8257 steps, 45 s on 2 shared cores): against Buchner's downstream-wall
+// pressure, filtered over 0.1 in τ = t sqrt(g/H). Measured: first peak −0.8%, its time 0.245 late,
+// impact (half the peak reached) 0.096 late, L2 error 0.453. The filtered peak scatters between
+// resolutions (+149% at H/Δx = 20, +14% at 80), so its bound is that scatter, ±20%, not 25% of a
+// value that happens to be near zero; a wall that lets the water through or a missing impact
+// moves it by −100%. The others: the measured value + 25%.
+TEST(ValidationCases, DamBreakWallPressureFollowsBuchner) {
+  const RunRecord r = run_at_test_resolution("dam_break_buchner");
+  EXPECT_LE(std::abs(metric(r, "first_peak_error")), 0.2);
+  EXPECT_LE(std::abs(metric(r, "first_peak_time_error")), 0.31);
+  EXPECT_LE(std::abs(metric(r, "impact_time_error")), 0.12);
+  EXPECT_LE(metric(r, "pressure_l2_error"), 0.57);
+}
+
+// The Lobovsky scene at H/Δx = 12 (1724 particles, 6 across the width, 2445 steps, 52 s on 2
+// shared cores), its end-wall probe at 0.2H against Buchner as above. The impact arrives within
+// 0.036 of Buchner's (measured −0.036; bound +25%, rounded). At this resolution the kernel
+// support (0.085 m) is wider than the probe's height (0.06 m) and the filtered first peak
+// overshoots (measured +196%, bound +25%); a missing impact would read −100%, hence the lower
+// bound. L2 error: measured 1.32, bound +25%. (At H/Δx = 24 the impact is 0.30 late, the peak
+// +44% and the L2 error 0.63: the 3D case is far from converged at the resolutions ctest can
+// afford; dam_break_buchner shows the converged behaviour.)
+TEST(ValidationCases, DamBreak3DWallPressureAtLowResolution) {
+  const RunRecord r = run_at_test_resolution("dam_break_3d");
+  EXPECT_LE(std::abs(metric(r, "impact_time_error")), 0.05);
+  EXPECT_GE(metric(r, "first_peak_error"), 0);
+  EXPECT_LE(metric(r, "first_peak_error"), 2.45);
+  EXPECT_LE(metric(r, "pressure_l2_error"), 1.65);
+}
+
+// 40 particles across, with Fickian shifting, t = 10, centre lines averaged over the last time
+// unit: u RMS error 0.0137 U, v 0.0069 U, vortex minimum 2.0% weak. The particle noise that
+// survives the averaging (the averaged profile moves by 0.0042 U between the last two units) is a
+// third of the u error, so the margin here is twice that noise, not 25%: a float build follows
+// other particle paths. The vortex minimum, one sample, gets 0.037 (its scatter without shifting).
+TEST(ValidationCases, LidDrivenCavityRe100) {
+  const RunRecord r = run_at_test_resolution("cavity_re100");
+  EXPECT_LT(metric(r, "u_centreline_rms_error"), 0.022);
+  EXPECT_LT(metric(r, "v_centreline_rms_error"), 0.015);
+  EXPECT_LT(metric(r, "u_min_error"), 0.057);
+}
+
+// 25 particles across, with shifting, t = 30: u RMS error 0.093 U, v 0.111 U, vortex minimum 32%
+// weak — far from resolved (50 particles: 0.064, 0.065, 12%; that run takes minutes), so this
+// guards the set-up, not the accuracy. Margins as above: twice the last unit's change (0.0061 U),
+// 0.04 on the vortex minimum.
+TEST(ValidationCases, LidDrivenCavityRe1000) {
+  const RunRecord r = run_at_test_resolution("cavity_re1000");
+  EXPECT_LT(metric(r, "u_centreline_rms_error"), 0.105);
+  EXPECT_LT(metric(r, "v_centreline_rms_error"), 0.123);
+  EXPECT_LT(metric(r, "u_min_error"), 0.36);
 }
 
 }  // namespace

@@ -11,48 +11,13 @@
 #include <string>
 #include <type_traits>
 
+#include "hydrostatic_scene.hpp"
 #include "tide/solvers/instability.hpp"
 
 namespace tide {
 namespace {
 
 constexpr double gravity = 9.81;
-
-// A tank of width W (and depth W in 3D) filled to height H, with n particle rows over H, Wendland
-// C2 kernel. 2D: summation density, h = 1.7 Δx. 3D: continuity density, h = 1.5 Δx, gravity
-// raised over 0.5 s (see Tank3DSettlesToHydrostaticPressure for why).
-scene::Scene hydrostatic_scene(int dimension, double height, double width, int rows) {
-  scene::Scene s;
-  s.source = "hydrostatic test";
-  s.dimension = dimension;
-  s.particle_spacing = height / rows;
-  s.kernel = KernelType::wendland_c2;
-  s.smoothing_ratio = dimension == 2 ? 1.7 : 1.5;
-  s.materials.push_back({"water", 1000, 1e-6, std::nullopt, std::sqrt(2 * gravity * height)});
-  const int up = dimension - 1;
-  scene::Vec top{width, width, width};
-  top[up] = height;
-  s.fluid.push_back({0, scene::Box{{0, 0, 0}, top}});
-  scene::Vec rim = top;
-  rim[up] = 1.5 * height;
-  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, rim}, true};
-  s.walls.layers = 4;  // cover the kernel support (3.4 and 3 spacings)
-  const double margin = s.walls.layers * s.particle_spacing;
-  s.domain.box = {{-margin, -margin, -margin}, {width + margin, width + margin, width + margin}};
-  s.domain.box.max[up] = 3 * height;
-  if (dimension == 2) s.domain.box.min[2] = s.domain.box.max[2] = 0;
-  s.gravity = {0, 0, 0};
-  s.gravity[up] = -gravity;
-  // Stronger artificial viscosity than for flows: it damps the acoustic oscillation of the
-  // column started from a uniform lattice, so the tank comes to rest in a few seconds.
-  s.solver.alpha = 0.1;
-  if (dimension == 3) {
-    s.solver.density = scene::DensityMethod::continuity;
-    s.solver.delta_sph = 0;
-    s.solver.gravity_ramp_time = 0.5;
-  }
-  return s;
-}
 
 // After settling, in 5 horizontal bands: the mean pressure of each band against ρ0 g (H − ȳ)
 // (exact for the band mean of a linear profile), within 2%, for every band that lies entirely
@@ -193,6 +158,28 @@ TEST(WcsphStability, SupersonicParticleIsReported) {
     EXPECT_GT(error.time(), 0.0);
     EXPECT_NE(std::string(error.what()).find("particle " + std::to_string(error.particle_id())), std::string::npos);
   }
+}
+
+// The speed band is solver.max_mach_number × c0: the start-up sloshing of a tank (a few cm/s)
+// is far below c0 = 31 m/s, but above 1e-4 c0, and the report names the band's key.
+TEST(WcsphStability, SpeedBandIsAConfigurableMultipleOfTheSoundSpeed) {
+  scene::Scene s = hydrostatic_scene(2, 0.5, 0.5, 10);
+  s.solver.max_mach_number = 1e-4;
+  Wcsph<2> simulation(s);
+  const double band = 1e-4 * static_cast<double>(simulation.equation_of_state().sound_speed());
+  try {
+    for (int k = 0; k < 2000; ++k) simulation.step();
+    FAIL() << "no instability reported";
+  } catch (const InstabilityError& error) {
+    EXPECT_EQ(error.field(), "speed");
+    EXPECT_GT(error.value(), band);
+    const std::string message = error.what();
+    EXPECT_NE(message.find("solver.max_mach_number"), std::string::npos) << message;
+    EXPECT_NE(message.find("the last time step was dt = "), std::string::npos) << message;
+  }
+  s.solver.max_mach_number = 1;
+  Wcsph<2> calm(s);
+  for (int k = 0; k < 2000; ++k) calm.step();
 }
 
 // Tait: p = B((ρ/ρ0)^γ − 1), B = ρ0 c0²/γ; linear: p = c0²(ρ − ρ0); density() inverts both, and

@@ -5,25 +5,6 @@
 #include "report_support.hpp"
 
 namespace tide::validation {
-namespace {
-
-// RFC 4180: a field with a comma, quote or line break is quoted, its quotes doubled.
-std::string csv_field(std::string_view text) {
-  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + '"';
-}
-
-void write_row(std::ostringstream& out, const std::vector<std::string>& fields) {
-  for (std::size_t k = 0; k < fields.size(); ++k) out << (k > 0 ? "," : "") << csv_field(fields[k]);
-  out << '\n';
-}
-
-}  // namespace
 
 void write_csv(const std::filesystem::path& path, std::span<const StudyRun> runs) {
   const std::vector<std::string> metrics = detail::metric_names(runs);
@@ -32,7 +13,7 @@ void write_csv(const std::filesystem::path& path, std::span<const StudyRun> runs
                                   "status"};
   header.insert(header.end(), metrics.begin(), metrics.end());
   std::ostringstream out;
-  write_row(out, header);
+  write_csv_row(out, header);
   for (const StudyRun& run : runs) {
     const RunRecord& record = run.record;
     std::vector<std::string> row{record.case_name, record.scheme, record.kernel, std::to_string(record.resolution)};
@@ -48,18 +29,18 @@ void write_csv(const std::filesystem::path& path, std::span<const StudyRun> runs
       const auto value = detail::metric_value(record, name);
       row.push_back(value && run.ok() ? detail::format_shortest(*value) : "");
     }
-    write_row(out, row);
+    write_csv_row(out, row);
   }
   detail::write_text_file(path, out.str());
 }
 
 void write_orders_csv(const std::filesystem::path& path, std::span<const ConvergenceOrder> orders) {
   std::ostringstream out;
-  write_row(out, {"case", "scheme", "kernel", "metric", "from", "to", "order", "fit"});
+  write_csv_row(out, {"case", "scheme", "kernel", "metric", "from", "to", "order", "fit"});
   for (const ConvergenceOrder& order : orders) {
-    write_row(out, {order.case_name, order.scheme, order.kernel, order.metric, std::to_string(order.from),
-                    std::to_string(order.to), detail::format_shortest(order.order),
-                    order.least_squares ? "least_squares" : "consecutive"});
+    write_csv_row(out, {order.case_name, order.scheme, order.kernel, order.metric, std::to_string(order.from),
+                        std::to_string(order.to), detail::format_shortest(order.order),
+                        order.least_squares ? "least_squares" : "consecutive"});
   }
   detail::write_text_file(path, out.str());
 }

@@ -10,15 +10,12 @@
 #include <vector>
 
 #include "tide/validation/report.hpp"
+#include "tide/validation/text_output.hpp"
 
 namespace tide::validation::detail {
 
-/// Writes `text` to `path` through a temporary file beside it and a rename, so a reader never
-/// sees a half-written file; creates the parent directory if needed.
-void write_text_file(const std::filesystem::path& path, std::string_view text);
-
-/// The shortest decimal text that reads back as exactly `value`.
-std::string format_shortest(double value);
+using validation::format_shortest;
+using validation::write_text_file;
 
 /// The value of the metric called `name`, if the record has it.
 std::optional<double> metric_value(const RunRecord& record, std::string_view name);

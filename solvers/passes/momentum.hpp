@@ -1,6 +1,7 @@
 #pragma once
 
-// Acceleration of every fluid particle: pressure, viscosity and body force in one gather pass.
+// Acceleration of every fluid particle: pressure, viscosity, artificial stress and body force in
+// one gather pass.
 
 #include <cmath>
 
@@ -33,6 +34,12 @@ inline ViscositySettings viscosity_settings(const scene::Scene& scene, Real soun
           smoothing_length};
 }
 
+/// Monaghan's (2000) artificial stress; `epsilon` = 0 compiles the pass without it.
+struct ArtificialStressSettings {
+  Real epsilon = 0;
+  Real inverse_lattice_kernel = 0;  // 1 / W(Δx), the kernel at one particle spacing
+};
+
 namespace detail {
 
 // Viscous acceleration on i from one neighbour j.
@@ -56,14 +63,34 @@ inline Vector<D> viscous_term(const ViscositySettings& s, Real m_j, Real rho_i, 
   }
 }
 
+// A particle's share R_i of the artificial stress: ε |p_i|/ρ_i² where it is in tension (p_i < 0),
+// none under compression. Gray, Monaghan & Swift 2001 take R = −ε σ/ρ² from each principal
+// stress σ that is tensile (σ > 0); a fluid's stress is −p I, which gives this scalar form.
+inline Real artificial_stress_share(Real epsilon, Real p_over_rho2) {
+  return p_over_rho2 < 0 ? -epsilon * p_over_rho2 : Real(0);
+}
+
+// (W(r)/W(Δx))^4: the artificial stress acts only between particles closer than about the
+// initial spacing, and grows fast as they approach (Monaghan 2000, n = 4).
+template <class Kernel>
+inline Real artificial_stress_weight(const Kernel& kernel, const ArtificialStressSettings& s, Real r) {
+  const Real f = kernel.value(r) * s.inverse_lattice_kernel;
+  const Real f2 = f * f;
+  return f2 * f2;
+}
+
 }  // namespace detail
 
 /// a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3) + viscous terms + g,
 /// summed over fluid and wall neighbours (walls with their extrapolated p, ρ and velocity).
-/// Without `WithPressure`, the non-pressure part only: what an incompressible scheme integrates
-/// before its pressure solve.
-template <int D, scene::ViscosityModel Model, bool WithPressure = true, class Kernel>
-void momentum(const Kernel& kernel, const ViscositySettings& settings, ParticleSet<D>& fluid, const FluidFields<D>& f,
+/// With `ArtificialStress`, each pair's pressure term gains (R_i + R_j) (W_ij/W(Δx))^4, a
+/// repulsion between particles in tension that stops them clumping in pairs (Monaghan 2000,
+/// J. Comput. Phys. 159, the artificial pressure added to the equation of motion). Without
+/// `WithPressure`, the non-pressure part only: what an incompressible scheme integrates before
+/// its pressure solve.
+template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, class Kernel>
+void momentum(const Kernel& kernel, const ViscositySettings& settings,
+              [[maybe_unused]] const ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
               const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
               const Vector<D>& gravity) {
   const auto x = std::as_const(fluid)[f.position];
@@ -81,12 +108,24 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings, ParticleS
     const Vector<D> v_i = v[i];
     const Real rho_i = density[i];
     const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
+    [[maybe_unused]] Real stress_i = 0;
+    if constexpr (ArtificialStress) stress_i = detail::artificial_stress_share(stress.epsilon, p_over_rho2_i);
+    // The pressure term of one pair, with the artificial stress when it is compiled in.
+    const auto pressure_term = [&](Real p_over_rho2_j, Real r) {
+      Real term = p_over_rho2_i + p_over_rho2_j;
+      if constexpr (ArtificialStress) {
+        const Real stress_j = detail::artificial_stress_share(stress.epsilon, p_over_rho2_j);
+        term += (stress_i + stress_j) * detail::artificial_stress_weight(kernel, stress, r);
+      }
+      return term;
+    };
     Vector<D> a = gravity;
     neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
       if (j == i) return;
       const Real rho_j = density[j];
-      const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
-      if constexpr (WithPressure) a -= (mass[j] * (p_over_rho2_i + pressure[j] / (rho_j * rho_j))) * grad_w;
+      const Real r = std::sqrt(r2);
+      const Vector<D> grad_w = kernel.gradient(x_ij, r);
+      if constexpr (WithPressure) a -= (mass[j] * pressure_term(pressure[j] / (rho_j * rho_j), r)) * grad_w;
       a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
     });
     if (!WithPressure && !settings.walls_viscous) {
@@ -95,8 +134,9 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings, ParticleS
     }
     neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
       const Real rho_b = wall_density[b];
-      const Vector<D> grad_w = kernel.gradient(x_ib, std::sqrt(r2));
-      if constexpr (WithPressure) a -= (wall_mass[b] * (p_over_rho2_i + wall_pressure[b] / (rho_b * rho_b))) * grad_w;
+      const Real r = std::sqrt(r2);
+      const Vector<D> grad_w = kernel.gradient(x_ib, r);
+      if constexpr (WithPressure) a -= (wall_mass[b] * pressure_term(wall_pressure[b] / (rho_b * rho_b), r)) * grad_w;
       if (settings.walls_viscous)
         a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
     });
@@ -104,16 +144,23 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings, ParticleS
   });
 }
 
-/// momentum() with the viscosity model of `settings`, chosen once per pass.
+/// momentum() compiled for the viscosity model of `settings` and for artificial stress on or off,
+/// picked once per pass outside the particle loop: a scene without artificial stress runs a pass
+/// without it.
 template <int D, bool WithPressure = true, class Kernel>
-void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, ParticleSet<D>& fluid,
-                        const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
-                        const WallFields<D>& w, const Vector<D>& gravity) {
+void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, const ArtificialStressSettings& stress,
+                        ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
+                        const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity) {
+  const auto run = [&]<scene::ViscosityModel Model, bool Stress>() {
+    momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, neighbors, walls, w, gravity);
+  };
+  const bool with_stress = WithPressure && stress.epsilon > 0;
   if (settings.model == scene::ViscosityModel::artificial) {
-    momentum<D, scene::ViscosityModel::artificial, WithPressure>(kernel, settings, fluid, f, neighbors, walls, w,
-                                                                 gravity);
+    with_stress ? run.template operator()<scene::ViscosityModel::artificial, WithPressure>()
+                : run.template operator()<scene::ViscosityModel::artificial, false>();
   } else {
-    momentum<D, scene::ViscosityModel::laminar, WithPressure>(kernel, settings, fluid, f, neighbors, walls, w, gravity);
+    with_stress ? run.template operator()<scene::ViscosityModel::laminar, WithPressure>()
+                : run.template operator()<scene::ViscosityModel::laminar, false>();
   }
 }
 

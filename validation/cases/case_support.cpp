@@ -1,8 +1,11 @@
 #include "case_support.hpp"
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
+
+#include "tide/solvers/probes.hpp"
 
 namespace tide::validation {
 
@@ -54,5 +57,16 @@ Curve read_reference(const std::string& file, int x_column, int y_column) {
   if (curve.x.empty()) throw std::runtime_error(path + ": no data rows");
   return curve;
 }
+
+template <int D>
+Vector<D> shepard_velocity(const Simulation<D>& simulation, const Vector<D>& point) {
+  const auto v = simulation.fluid()[simulation.fluid_fields().velocity];
+  return shepard_interpolation<D>(
+      simulation, point, [&](Index j, const Vector<D>&) { return Vector<D>(v[j]); },
+      Vector<D>(Vector<D>::Constant(std::numeric_limits<Real>::quiet_NaN())));
+}
+
+template Vector<2> shepard_velocity<2>(const Simulation<2>&, const Vector<2>&);
+template Vector<3> shepard_velocity<3>(const Simulation<3>&, const Vector<3>&);
 
 }  // namespace tide::validation

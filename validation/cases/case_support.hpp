@@ -1,7 +1,7 @@
 #pragma once
 
 // What the validation cases share: applying a variant to a scene, timing the stepping, reading
-// reference tables and building the run record.
+// reference tables, sampling the velocity field and building the run record.
 
 #include <chrono>
 #include <cmath>
@@ -68,11 +68,21 @@ class RelativeL2 {
   double norm_ = 0;
 };
 
+/// Velocity at `point` by Shepard interpolation over the fluid particles within the kernel
+/// support: Σ_j V_j v_j W(x − x_j) / Σ_j V_j W(x − x_j), V_j = m_j/ρ_j (Shepard 1968: the SPH
+/// interpolant normalised so that it reproduces a uniform field exactly, also beside a wall). NaN
+/// when no fluid particle lies within the support, so that a void at a probe shows in the metrics.
+template <int D>
+Vector<D> shepard_velocity(const Simulation<D>& simulation, const Vector<D>& point);
+
 // Each case, built in its own file.
 Case hydrostatic_case(int dimension);
 Case poiseuille_case();
 Case couette_case();
 Case taylor_green_case();
 Case dam_break_2d_case();
+Case dam_break_buchner_case();
+Case dam_break_3d_case();
+Case lid_driven_cavity_case(int reynolds);
 
 }  // namespace tide::validation

@@ -53,12 +53,19 @@ struct TaylorGreenVelocity {
   double length = 1;     // L, m
 };
 
+/// Rigid rotation about `centre` in the plane: u = −ω (y − y_c), v = ω (x − x_c), ω > 0
+/// counter-clockwise (the rotating square patch of Colagrossi 2005 starts this way).
+struct RigidRotation {
+  Vec centre{};
+  double angular_velocity = 1;  // ω, rad/s
+};
+
 /// A block of fluid particles filled on the lattice of the particle spacing, with its initial
 /// velocity: uniform, or a named field.
 struct FluidBlock {
   std::size_t material = 0;  // index into Scene::materials
   std::variant<Box, Ball> shape;
-  std::variant<Vec, TaylorGreenVelocity> velocity{Vec{}};
+  std::variant<Vec, TaylorGreenVelocity, RigidRotation> velocity{Vec{}};
 };
 
 enum class WallSlip { no_slip, free_slip };
@@ -98,6 +105,20 @@ struct Domain {
   std::array<bool, 3> periodic{};
 };
 
+/// The domain a container needs when the scene gives none: its inner box grown by the wall
+/// thickness on every side and, above an open top, as much room again as the container is high,
+/// so that a splash stays inside the domain.
+inline Domain domain_around(const Container& container, double wall_thickness, int dimension) {
+  Domain domain;
+  for (int d = 0; d < dimension; ++d) {
+    domain.box.min[d] = container.inner.min[d] - wall_thickness;
+    domain.box.max[d] = container.inner.max[d] + wall_thickness;
+  }
+  const int up = dimension - 1;
+  if (container.open_top) domain.box.max[up] += container.inner.max[up] - container.inner.min[up];
+  return domain;
+}
+
 /// wcsph: weakly compressible, pressure from an equation of state. dfsph, iisph: incompressible,
 /// pressure from an implicit solve (Bender & Koschier 2017; Ihmsen et al. 2014).
 enum class Scheme { wcsph, dfsph, iisph };
@@ -119,10 +140,12 @@ struct Solver {
   double viscous_number = 0.125;        // viscous limit: dt ≤ viscous_number · h² / ν
   double force_number = 0.25;           // force limit: dt ≤ force_number · sqrt(h / |a|max)
   double max_density_ratio = 1.5;       // stability band: ρ/ρ0 must stay inside [1/ratio, ratio]
+  double max_mach_number = 1;           // stability band: |v| must stay at or below this multiple of c0
   bool clamp_negative_pressure = true;  // p = max(p, 0): free-surface flows without tension
   double gravity_ramp_time = 0;         // s: gravity rises smoothly from 0 over this time (0: at once)
   double background_pressure = 0;       // Pa, added to the equation of state (closed or periodic flows)
   Shifting shifting = Shifting::none;   // particle shifting after each step (Lind et al. 2012)
+  double artificial_stress = 0;         // ε of Monaghan's (2000) artificial stress; 0: off
   // Incompressible schemes (dfsph, iisph) only:
   double max_density_error = 0.0005;    // pressure solve ends when the mean density error is below this share of ρ0
   double max_divergence_error = 0.001;  // DFSPH divergence solve: mean error of Δt Dρ/Dt, as a share of ρ0
@@ -143,6 +166,17 @@ inline constexpr std::array<std::string_view, 7> output_field_names{"position", 
 
 struct Output {
   std::vector<std::string> fields{"position", "velocity", "density", "pressure"};
+  double probe_interval = 0.01;  // s between probe rows; the reader sets time.output_interval when the file has none
+};
+
+/// What a probe measures (docs/scenes.md, "probes"): the pressure at its position, or the height
+/// of the free surface above its position along the up (−gravity) direction.
+enum class ProbeType { pressure, water_height };
+
+struct Probe {
+  std::string name;  // the probe's column in probes.csv
+  ProbeType type = ProbeType::pressure;
+  Vec position{};
 };
 
 struct Scene {
@@ -159,6 +193,7 @@ struct Scene {
   Solver solver;
   Time time;
   Output output;
+  std::vector<Probe> probes;
 };
 
 }  // namespace tide::scene

@@ -16,7 +16,7 @@
 namespace tide::io {
 
 /// A scene that cannot be simulated. what() reads
-///   dam.json: /solver/cfl: expected a number in (0, 1], got "fast"
+///   dam.json: /solver/cfl: expected a number > 0, got "fast"
 /// or, for text that is not JSON,
 ///   dam.json: line 4, column 12: expected valid JSON, got syntax error while parsing ...
 class SceneError : public std::runtime_error {

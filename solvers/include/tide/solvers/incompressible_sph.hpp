@@ -37,11 +37,18 @@ class IncompressibleSph final : public Simulation<D> {
 
   StepReport step() override;
 
+  const scene::Scene& scene() const override { return scene_; }
   double time() const override { return time_; }
   std::uint64_t step_count() const override { return step_count_; }
   const ParticleSet<D>& fluid() const override { return fluid_; }
   const ParticleSet<D>& walls() const override { return walls_; }
   const FluidFields<D>& fluid_fields() const override { return fluid_fields_; }
+  const WallFields<D>& wall_fields() const override { return wall_fields_; }
+  const NeighborGrid<D>& fluid_grid() const override { return neighbors_.fluid_grid(); }
+  const NeighborGrid<D>& wall_grid() const override { return neighbors_.wall_grid(); }
+  const AnyKernel<D>& kernel() const override { return kernel_; }
+  Vector<D> gravity() const override { return gravity_; }
+  Real rest_density() const override { return rest_density_; }
   const PressureSolveFields<D>& solve_fields() const { return solve_fields_; }
   const IncompressibleScheme& scheme() const { return scheme_; }
   Real relaxation() const { return relaxation_; }

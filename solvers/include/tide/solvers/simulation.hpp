@@ -6,8 +6,10 @@
 #include <optional>
 #include <string_view>
 
+#include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
+#include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/time_step.hpp"
 
@@ -72,12 +74,20 @@ class Simulation {
   /// Advances one adaptive time step; throws InstabilityError when the state leaves its bounds.
   virtual StepReport step() = 0;
 
+  virtual const scene::Scene& scene() const = 0;
   /// Simulated time in s, kept in double so that a float build still resolves small steps late in a run.
   virtual double time() const = 0;
   virtual std::uint64_t step_count() const = 0;
   virtual const ParticleSet<D>& fluid() const = 0;
   virtual const ParticleSet<D>& walls() const = 0;
   virtual const FluidFields<D>& fluid_fields() const = 0;
+  virtual const WallFields<D>& wall_fields() const = 0;
+  virtual const NeighborGrid<D>& fluid_grid() const = 0;
+  virtual const NeighborGrid<D>& wall_grid() const = 0;
+  virtual const AnyKernel<D>& kernel() const = 0;
+  /// Gravity now: the scene's, or less while it is being raised (solver.gravity_ramp_time).
+  virtual Vector<D> gravity() const = 0;
+  virtual Real rest_density() const = 0;
   virtual Real smoothing_length() const = 0;
   virtual Real max_speed() const = 0;
   virtual std::size_t removed_total() const = 0;

@@ -8,6 +8,11 @@
 
 namespace tide {
 
+/// The largest acoustic CFL number at which WCSPH's kick-drift-kick steps are taken to be
+/// stable. Above 1 a scene is warned about; the 2D tank at rest of docs/stability.md (time step)
+/// stays at rest up to 1.5 and goes unstable from 2.
+inline constexpr Real max_stable_cfl = 1;
+
 /// Which stability limit set a time step: acoustic (weakly compressible schemes), velocity
 /// (incompressible schemes), viscous or force.
 enum class TimeStepLimit { acoustic, velocity, viscous, force };

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -28,13 +29,20 @@ class Wcsph final : public Simulation<D> {
 
   StepReport step() override;
 
+  const scene::Scene& scene() const override { return scene_; }
   double time() const override { return time_; }
   std::uint64_t step_count() const override { return step_count_; }
   const ParticleSet<D>& fluid() const override { return fluid_; }
   const ParticleSet<D>& walls() const override { return walls_; }
   const FluidFields<D>& fluid_fields() const override { return fluid_fields_; }
+  const WallFields<D>& wall_fields() const override { return wall_fields_; }
   const EquationOfState& equation_of_state() const { return eos_; }
-  const NeighborGrid<D>& fluid_grid() const { return neighbors_.fluid_grid(); }
+  /// Gravity now: the scene's, or less while it is being raised (solver.gravity_ramp_time).
+  Vector<D> gravity() const override;
+  const NeighborGrid<D>& fluid_grid() const override { return neighbors_.fluid_grid(); }
+  const NeighborGrid<D>& wall_grid() const override { return neighbors_.wall_grid(); }
+  const AnyKernel<D>& kernel() const override { return kernel_; }
+  Real rest_density() const override { return eos_.rest_density(); }
   Real smoothing_length() const override { return smoothing_length_; }
   Real max_speed() const override { return max_speed_; }
   std::size_t removed_total() const override { return neighbors_.fluid_grid().removed_total(); }
@@ -47,6 +55,9 @@ class Wcsph final : public Simulation<D> {
   void compute_density_rate(const Vector<D>& gravity);
   void shift_particles(Real dt);
   void check_state();
+  /// What bound the last time step, for an instability message: a step above its stable limit
+  /// is a common cause.
+  std::string time_step_note() const;
 
   scene::Scene scene_;
   Real smoothing_length_;
@@ -61,6 +72,7 @@ class Wcsph final : public Simulation<D> {
   FluidWallNeighbors<D> neighbors_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
+  TimeStep last_time_step_;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
   PassTimes pass_times_;

@@ -49,7 +49,7 @@ struct Case {
   std::string reference;                  // what the errors are measured against, with the citation
   std::string resolution_meaning;         // e.g. "particles across the channel"
   std::vector<std::string> metric_notes;  // one line per metric: name and definition
-  std::vector<int> resolutions;           // the study's default ladder (each step doubles)
+  std::vector<int> resolutions;           // the study's default ladder (doubling where the cost allows)
   int test_resolution = 0;                // the low resolution the regression test runs
   std::function<RunRecord(int resolution, const Variant& variant)> run;
 };
