@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -16,7 +17,7 @@
 #include "tide/io/scene_reader.hpp"
 #include "tide/solvers/instability.hpp"
 #include "tide/solvers/probes.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/simulation.hpp"
 
 namespace tide::app {
 namespace {
@@ -29,9 +30,40 @@ std::string limit_counts(const TimeStepTally& tally) {
   return text.str();
 }
 
-std::map<std::string, std::string> frame_attributes(const TimeStepTally& since_last_frame) {
+// The pressure solves of one kind over a run, for its summary and its frames.
+struct SolveTallies {
+  SolveTally density;
+  SolveTally divergence;
+
+  void add(const StepReport& report) {
+    if (report.density_solve) density.add(*report.density_solve);
+    if (report.divergence_solve) divergence.add(*report.divergence_solve);
+  }
+};
+
+void add_solve_attributes(const std::string& name, const SolveTally& tally,
+                          std::map<std::string, std::string>& attributes) {
+  if (tally.solves == 0) return;
+  attributes[name + "_solve_mean_iterations"] = std::to_string(tally.mean_iterations());
+  attributes[name + "_solve_max_iterations"] = std::to_string(tally.max_iterations);
+  attributes[name + "_solve_max_error"] = std::to_string(tally.max_error);
+}
+
+void print_solve_summary(const char* name, const SolveTally& tally) {
+  if (tally.solves == 0) return;
+  std::printf(
+      "  %-11s %.3g iterations per step (max %d), final mean density error %.3g%% of rho0 (max %.3g%%), %zu of %zu "
+      "missed the threshold\n",
+      name, tally.mean_iterations(), tally.max_iterations, 100 * tally.mean_error(), 100 * tally.max_error,
+      tally.missed, tally.solves);
+}
+
+std::map<std::string, std::string> frame_attributes(const TimeStepTally& since_last_frame,
+                                                    const SolveTallies& solves_since_last_frame) {
   std::map<std::string, std::string> attributes;
   if (since_last_frame.total() == 0) return attributes;
+  add_solve_attributes("density", solves_since_last_frame.density, attributes);
+  add_solve_attributes("divergence", solves_since_last_frame.divergence, attributes);
   attributes["time_step_limit"] = std::string(time_step_limit_name(since_last_frame.most_frequent()));
   for (std::size_t k = 0; k < time_step_limit_count; ++k) {
     attributes[std::string(time_step_limit_name(static_cast<TimeStepLimit>(k))) + "_limited_steps"] =
@@ -69,7 +101,7 @@ class ProbeRecorder {
   const io::ProbeWriter& writer() const { return writer_; }
 
   /// Adds a row if one is due at the simulation's time.
-  void record(const Wcsph<D>& simulation) {
+  void record(const Simulation<D>& simulation) {
     if (!active() || !schedule_.due(simulation.time())) return;
     writer_.add(simulation.time(), read_probes<D>(simulation, scene_.probes));
     schedule_.advance_past(simulation.time());
@@ -87,9 +119,9 @@ class ProbeRecorder {
 
 template <int D>
 int run(const scene::Scene& scene, const RunOptions& options, const std::filesystem::path& output_directory) {
-  std::optional<Wcsph<D>> simulation;
+  std::unique_ptr<Simulation<D>> simulation;
   try {
-    simulation.emplace(scene);
+    simulation = make_simulation<D>(scene);
   } catch (const InstabilityError& error) {
     std::cerr << "tide: " << scene.source << ": the initial state is already out of bounds: " << error.what() << '\n';
     return exit_unstable;
@@ -102,14 +134,15 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   const double interval = scene.time.output_interval;
   const std::size_t particles = simulation->fluid().size();
   if (!options.quiet) {
-    std::cout << "tide: running " << scene.source << " (" << D << "D, " << particles << " fluid and "
-              << simulation->walls().size() << " wall particles) until t = " << end_time << " s; frames every "
-              << interval << " s into " << output_directory.string() << '\n';
+    std::cout << "tide: running " << scene.source << " (" << scheme_name(scene.solver.scheme) << ", " << D << "D, "
+              << particles << " fluid and " << simulation->walls().size() << " wall particles) until t = " << end_time
+              << " s; frames every " << interval << " s into " << output_directory.string() << '\n';
   }
   const bool terminal = isatty(fileno(stdout)) != 0;
   Progress progress(std::cout, terminal, options.quiet, scene.time.start, end_time, particles);
 
   TimeStepTally run_tally, frame_tally;
+  SolveTallies run_solves, frame_solves;
   writer.write(simulation->fluid(), simulation->time(), 0);
   ProbeRecorder<D> probes(scene, output_directory);
   probes.record(*simulation);
@@ -121,12 +154,16 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
       const StepReport report = simulation->step();
       run_tally.add(report.time_step.limit);
       frame_tally.add(report.time_step.limit);
+      run_solves.add(report);
+      frame_solves.add(report);
       const double time = simulation->time();
       probes.record(*simulation);
       if (frames.due(time) || time >= end_time) {
-        last_frame = writer.write(simulation->fluid(), time, simulation->step_count(), frame_attributes(frame_tally));
+        last_frame = writer.write(simulation->fluid(), time, simulation->step_count(),
+                                  frame_attributes(frame_tally, frame_solves));
         probes.write();
         frame_tally = {};
+        frame_solves = {};
         frames.advance_past(time);
       }
       progress.update(time, simulation->step_count());
@@ -150,12 +187,15 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   std::printf("  wall time   %.2f s, %.3g M particle-steps/s (fluid particles x steps / wall time)\n", wall,
               rate / 1e6);
   std::printf("  time step   binding limit per step: %s\n", limit_counts(run_tally).c_str());
+  print_solve_summary("density", run_solves.density);
+  print_solve_summary("divergence", run_solves.divergence);
   const PassTimes& times = simulation->pass_times();
   const double total = std::max(times.total(), 1e-12);
   std::printf(
-      "  passes      neighbour search %.0f%%, density %.0f%%, walls %.0f%%, momentum %.0f%%, integration %.0f%%\n",
+      "  passes      neighbour search %.0f%%, density %.0f%%, walls %.0f%%, momentum %.0f%%, pressure solve %.0f%%, "
+      "integration %.0f%%\n",
       100 * times.neighbor_search / total, 100 * times.density / total, 100 * times.wall_state / total,
-      100 * times.momentum / total, 100 * times.integration / total);
+      100 * times.momentum / total, 100 * times.pressure_solve / total, 100 * times.integration / total);
   std::printf("  output      %zu frames, %s\n", writer.frames_written(), writer.xdmf_path().string().c_str());
   if (probes.active())
     std::printf("  probes      %zu rows, %s\n", probes.writer().rows(), probes.writer().path().string().c_str());
@@ -207,16 +247,15 @@ int check_scene(const std::filesystem::path& scene_file) {
   if (!scene) return exit_bad_input;
   try {
     auto report = [&](const auto& simulation) {
-      std::cout << scene_file.string() << ": ok: " << scene->dimension << "D, " << simulation.fluid().size()
-                << " fluid and " << simulation.walls().size()
-                << " wall particles, h = " << simulation.smoothing_length()
-                << " m, c0 = " << simulation.equation_of_state().sound_speed() << " m/s, t = " << scene->time.start
-                << " to " << scene->time.end << " s\n";
+      std::cout << scene_file.string() << ": ok: " << scheme_name(scene->solver.scheme) << ", " << scene->dimension
+                << "D, " << simulation.fluid().size() << " fluid and " << simulation.walls().size()
+                << " wall particles, h = " << simulation.smoothing_length() << " m, t = " << scene->time.start << " to "
+                << scene->time.end << " s\n";
     };
     if (scene->dimension == 2) {
-      report(Wcsph<2>(*scene));
+      report(*make_simulation<2>(*scene));
     } else {
-      report(Wcsph<3>(*scene));
+      report(*make_simulation<3>(*scene));
     }
   } catch (const InstabilityError& error) {
     std::cerr << "tide: " << scene_file.string() << ": the initial state is out of bounds: " << error.what() << '\n';

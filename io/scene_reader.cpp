@@ -250,6 +250,7 @@ struct NumberRule {
 constexpr NumberRule any_number{"a number", [](double) { return true; }};
 constexpr NumberRule positive{"a number > 0", [](double x) { return x > 0; }};
 constexpr NumberRule non_negative{"a number >= 0", [](double x) { return x >= 0; }};
+constexpr NumberRule in_unit_interval{"a number in (0, 1]", [](double x) { return x > 0 && x <= 1; }};
 constexpr NumberRule above_one{"a number > 1", [](double x) { return x > 1; }};
 
 /// An enumerator with its spelling in scene files.
@@ -259,7 +260,11 @@ struct Named {
   E value;
 };
 
-constexpr std::array<Named<scene::Scheme>, 1> scheme_names{{{"wcsph", scene::Scheme::wcsph}}};
+constexpr std::array<Named<scene::Scheme>, 3> scheme_names{
+    {{"wcsph", scene::Scheme::wcsph}, {"dfsph", scene::Scheme::dfsph}, {"iisph", scene::Scheme::iisph}}};
+
+/// Iteration and step counts: at least 1, and small enough that a typo cannot stall a run.
+constexpr std::int64_t largest_count = 1'000'000;
 constexpr std::array<Named<scene::EquationOfState>, 2> equation_of_state_names{
     {{"tait", scene::EquationOfState::tait}, {"linear", scene::EquationOfState::linear}}};
 constexpr std::array<Named<scene::DensityMethod>, 2> density_method_names{
@@ -478,6 +483,16 @@ class SceneParser {
     if (const Node node = child(object, key); node.present()) target = vector(node);
   }
 
+  void read_optional(const Node& object, std::string_view key, int& target) const {
+    const Node node = child(object, key);
+    if (!node.present()) return;
+    const std::string expected = "an integer in [1, " + std::to_string(largest_count) + "]";
+    if (!node.value->is_number_integer()) fail(node, expected);
+    const auto count = node.value->get<std::int64_t>();
+    if (count < 1 || count > largest_count) fail(node, expected);
+    target = static_cast<int>(count);
+  }
+
   template <class E, std::size_t N>
   void read_optional(const Node& object, std::string_view key, E& target, const std::array<Named<E>, N>& names) const {
     if (const Node node = child(object, key); node.present()) target = choice(node, names);
@@ -689,10 +704,28 @@ class SceneParser {
   }
 
   void read_solver(const Node& node, scene::Solver& solver) const {
-    expect_object(
-        node, {"scheme", "equation_of_state", "tait_exponent", "density", "delta_sph", "viscosity", "alpha", "beta",
-               "cfl", "viscous_number", "force_number", "max_density_ratio", "max_mach_number",
-               "clamp_negative_pressure", "gravity_ramp_time", "background_pressure", "shifting", "artificial_stress"});
+    expect_object(node, {"scheme",
+                         "equation_of_state",
+                         "tait_exponent",
+                         "density",
+                         "delta_sph",
+                         "viscosity",
+                         "alpha",
+                         "beta",
+                         "cfl",
+                         "viscous_number",
+                         "force_number",
+                         "max_density_ratio",
+                         "clamp_negative_pressure",
+                         "gravity_ramp_time",
+                         "background_pressure",
+                         "shifting",
+                         "artificial_stress",
+                         "max_mach_number",
+                         "max_density_error",
+                         "max_divergence_error",
+                         "max_solver_iterations",
+                         "max_failed_solves"});
     read_optional(node, "scheme", solver.scheme, scheme_names);
     read_optional(node, "equation_of_state", solver.equation_of_state, equation_of_state_names);
     read_optional(node, "tait_exponent", solver.tait_exponent, positive);
@@ -712,6 +745,10 @@ class SceneParser {
     read_optional(node, "gravity_ramp_time", solver.gravity_ramp_time, non_negative);
     read_optional(node, "background_pressure", solver.background_pressure, non_negative);
     read_optional(node, "shifting", solver.shifting, shifting_names);
+    read_optional(node, "max_density_error", solver.max_density_error, in_unit_interval);
+    read_optional(node, "max_divergence_error", solver.max_divergence_error, in_unit_interval);
+    read_optional(node, "max_solver_iterations", solver.max_solver_iterations);
+    read_optional(node, "max_failed_solves", solver.max_failed_solves);
     read_optional(node, "artificial_stress", solver.artificial_stress, non_negative);
   }
 

@@ -45,13 +45,13 @@ Real length_inside(const GridDomain<D>& domain, const Vector<D>& start, const Ve
 }  // namespace
 
 template <int D>
-Real probe_pressure(const Wcsph<D>& simulation, const Vector<D>& point) {
+Real probe_pressure(const Simulation<D>& simulation, const Vector<D>& point) {
   const auto& fluid = simulation.fluid();
   const auto density = fluid[simulation.fluid_fields().density];
   const auto pressure = fluid[simulation.fluid_fields().pressure];
   const Vector<D> gravity = simulation.gravity();
-  const EquationOfState& eos = simulation.equation_of_state();
-  const Real at_rest = eos.pressure(eos.rest_density());
+  // The pressure of fluid at rest density: the equation of state's background pressure.
+  const Real at_rest = static_cast<Real>(simulation.scene().solver.background_pressure);
   const Real p = shepard_interpolation<D>(
       simulation, point, [&](Index j, const Vector<D>& x_pj) { return pressure[j] + density[j] * gravity.dot(x_pj); },
       at_rest);
@@ -59,8 +59,8 @@ Real probe_pressure(const Wcsph<D>& simulation, const Vector<D>& point) {
 }
 
 template <int D>
-Real fluid_colour(const Wcsph<D>& simulation, const Vector<D>& point) {
-  const Real rest_density = simulation.equation_of_state().rest_density();
+Real fluid_colour(const Simulation<D>& simulation, const Vector<D>& point) {
+  const Real rest_density = simulation.rest_density();
   return std::visit(
       [&](const auto& kernel) {
         const auto& fluid = simulation.fluid();
@@ -80,7 +80,7 @@ Real fluid_colour(const Wcsph<D>& simulation, const Vector<D>& point) {
 }
 
 template <int D>
-Real probe_water_height(const Wcsph<D>& simulation, const Vector<D>& base) {
+Real probe_water_height(const Simulation<D>& simulation, const Vector<D>& base) {
   const Vector<D> up = up_direction<D>(simulation.scene());
   const Real step = simulation.smoothing_length() / 4;
   const Real length = length_inside<D>(simulation.fluid_grid().domain(), base, up);
@@ -99,7 +99,7 @@ Real probe_water_height(const Wcsph<D>& simulation, const Vector<D>& base) {
 }
 
 template <int D>
-std::vector<double> read_probes(const Wcsph<D>& simulation, const std::vector<scene::Probe>& probes) {
+std::vector<double> read_probes(const Simulation<D>& simulation, const std::vector<scene::Probe>& probes) {
   std::vector<double> values;
   values.reserve(probes.size());
   for (const scene::Probe& probe : probes) {
@@ -110,13 +110,13 @@ std::vector<double> read_probes(const Wcsph<D>& simulation, const std::vector<sc
   return values;
 }
 
-template Real probe_pressure<2>(const Wcsph<2>&, const Vector<2>&);
-template Real probe_pressure<3>(const Wcsph<3>&, const Vector<3>&);
-template Real fluid_colour<2>(const Wcsph<2>&, const Vector<2>&);
-template Real fluid_colour<3>(const Wcsph<3>&, const Vector<3>&);
-template Real probe_water_height<2>(const Wcsph<2>&, const Vector<2>&);
-template Real probe_water_height<3>(const Wcsph<3>&, const Vector<3>&);
-template std::vector<double> read_probes<2>(const Wcsph<2>&, const std::vector<scene::Probe>&);
-template std::vector<double> read_probes<3>(const Wcsph<3>&, const std::vector<scene::Probe>&);
+template Real probe_pressure<2>(const Simulation<2>&, const Vector<2>&);
+template Real probe_pressure<3>(const Simulation<3>&, const Vector<3>&);
+template Real fluid_colour<2>(const Simulation<2>&, const Vector<2>&);
+template Real fluid_colour<3>(const Simulation<3>&, const Vector<3>&);
+template Real probe_water_height<2>(const Simulation<2>&, const Vector<2>&);
+template Real probe_water_height<3>(const Simulation<3>&, const Vector<3>&);
+template std::vector<double> read_probes<2>(const Simulation<2>&, const std::vector<scene::Probe>&);
+template std::vector<double> read_probes<3>(const Simulation<3>&, const std::vector<scene::Probe>&);
 
 }  // namespace tide

@@ -10,6 +10,8 @@ std::string_view time_step_limit_name(TimeStepLimit limit) {
   switch (limit) {
     case TimeStepLimit::acoustic:
       return "acoustic";
+    case TimeStepLimit::velocity:
+      return "velocity";
     case TimeStepLimit::viscous:
       return "viscous";
     case TimeStepLimit::force:
@@ -20,7 +22,9 @@ std::string_view time_step_limit_name(TimeStepLimit limit) {
 
 TimeStep choose_time_step(const TimeStepRule& rule, Real max_speed, Real max_acceleration) {
   const Real h = rule.smoothing_length;
-  TimeStep step{rule.cfl * h / (rule.sound_speed + max_speed), TimeStepLimit::acoustic};
+  TimeStep step = rule.sound_speed > 0
+                      ? TimeStep{rule.cfl * h / (rule.sound_speed + max_speed), TimeStepLimit::acoustic}
+                      : TimeStep{rule.cfl * h / std::max(max_speed, rule.speed_floor), TimeStepLimit::velocity};
   if (rule.kinematic_viscosity > 0) {
     const Real viscous = rule.viscous_number * h * h / rule.kinematic_viscosity;
     if (viscous < step.dt) step = {viscous, TimeStepLimit::viscous};

@@ -4,6 +4,7 @@
 // beside its walls. And probes.csv as ProbeWriter writes it.
 
 #include "tide/solvers/probes.hpp"
+#include "tide/solvers/wcsph.hpp"
 
 #include <gtest/gtest.h>
 

@@ -227,6 +227,10 @@ TEST(SceneReader, DefaultsComeFromTheSceneModel) {
   EXPECT_EQ(s.solver.viscous_number, model.solver.viscous_number);
   EXPECT_EQ(s.solver.force_number, model.solver.force_number);
   EXPECT_EQ(s.solver.max_density_ratio, model.solver.max_density_ratio);
+  EXPECT_EQ(s.solver.max_density_error, 0.0005);  // the issue's 0.05% of ρ0
+  EXPECT_EQ(s.solver.max_divergence_error, model.solver.max_divergence_error);
+  EXPECT_EQ(s.solver.max_solver_iterations, model.solver.max_solver_iterations);
+  EXPECT_EQ(s.solver.max_failed_solves, model.solver.max_failed_solves);
   EXPECT_EQ(s.time.start, model.time.start);
   EXPECT_EQ(s.time.output_interval, model.time.output_interval);
   EXPECT_EQ(s.output.fields, model.output.fields);
@@ -278,6 +282,23 @@ TEST(SceneReader, ReadsWallAndFluidVelocities) {
   EXPECT_EQ(std::get<scene::Vec>(s.fluid[1].velocity), vec(0, -1));
   EXPECT_EQ(s.solver.background_pressure, 50);
   EXPECT_EQ(s.solver.shifting, scene::Shifting::fickian);
+}
+
+TEST(SceneReader, ReadsTheIncompressibleSchemesAndTheirSolverKeys) {
+  for (const auto& [name, scheme] :
+       {std::pair{"dfsph", scene::Scheme::dfsph}, std::pair{"iisph", scene::Scheme::iisph}}) {
+    json document = with(full_2d_scene(), "/solver/scheme", name);
+    document = with(document, "/solver/max_density_error", 0.001);
+    document = with(document, "/solver/max_divergence_error", 0.002);
+    document = with(document, "/solver/max_solver_iterations", 250);
+    document = with(document, "/solver/max_failed_solves", 3);
+    const scene::Scene s = parse(document);
+    EXPECT_EQ(s.solver.scheme, scheme);
+    EXPECT_EQ(s.solver.max_density_error, 0.001);
+    EXPECT_EQ(s.solver.max_divergence_error, 0.002);
+    EXPECT_EQ(s.solver.max_solver_iterations, 250);
+    EXPECT_EQ(s.solver.max_failed_solves, 3);
+  }
 }
 
 TEST(SceneReader, ReadsARigidRotation) {
@@ -441,6 +462,16 @@ TEST(SceneReaderRefuses, OtherNumbersOutOfRange) {
   expect_refused(with(full_2d_scene(), "/solver/gravity_ramp_time", -0.1), "/solver/gravity_ramp_time",
                  "a number >= 0");
   expect_refused(with(full_2d_scene(), "/fluid/1/ball/radius", 0), "/fluid/1/ball/radius", "a number > 0");
+  expect_refused(with(full_2d_scene(), "/solver/max_density_error", 0), "/solver/max_density_error",
+                 "a number in (0, 1]");
+  expect_refused(with(full_2d_scene(), "/solver/max_divergence_error", 2), "/solver/max_divergence_error",
+                 "a number in (0, 1]");
+  expect_refused(with(full_2d_scene(), "/solver/max_solver_iterations", 0), "/solver/max_solver_iterations",
+                 "an integer in [1, 1000000]");
+  expect_refused(with(full_2d_scene(), "/solver/max_solver_iterations", 2.5), "/solver/max_solver_iterations",
+                 "an integer in [1, 1000000]");
+  expect_refused(with(full_2d_scene(), "/solver/max_failed_solves", -3), "/solver/max_failed_solves",
+                 "an integer in [1, 1000000]");
 }
 
 TEST(SceneReaderRefuses, VectorsOfTheWrongLength) {
@@ -463,7 +494,8 @@ TEST(SceneReaderRefuses, UnknownNamesListingTheValidOnes) {
   expect_refused(
       with(full_2d_scene(), "/kernel/type", "gaussian"), "/kernel/type",
       R"(one of "cubic_spline", "wendland_c2", "wendland_c4", "quintic_spline", "poly6", "spiky", "viscosity")");
-  expect_refused(with(full_2d_scene(), "/solver/scheme", "sph"), "/solver/scheme", R"(one of "wcsph")");
+  expect_refused(with(full_2d_scene(), "/solver/scheme", "sph"), "/solver/scheme",
+                 R"(one of "wcsph", "dfsph", "iisph")");
   expect_refused(with(full_2d_scene(), "/solver/equation_of_state", "cole"), "/solver/equation_of_state",
                  R"(one of "tait", "linear")");
   expect_refused(with(full_2d_scene(), "/solver/density", "sum"), "/solver/density",

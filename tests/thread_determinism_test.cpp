@@ -11,7 +11,7 @@
 #include "tide/core/parallel.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/probes.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/simulation.hpp"
 
 namespace tide {
 namespace {
@@ -58,8 +58,8 @@ TEST(ThreadDeterminism, KernelSumPassAndReductionAreBitwiseIdentical) {
 // reductions for the time step) must give the same particle state, and its probes the same
 // readings, for any thread count. Artificial stress acts only in tension: with the pressure clamp
 // off (`clamp` false), on the negative pressures a summation-density free surface has.
-std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod density, scene::Shifting shifting,
-                                              double artificial_stress = 0, bool clamp = true) {
+std::vector<Real> state_after_100_steps(int threads, scene::Scheme scheme, scene::DensityMethod density,
+                                        scene::Shifting shifting, double artificial_stress = 0, bool clamp = true) {
   const ThreadLimit limit(threads);
   scene::Scene s;
   s.source = "thread determinism";
@@ -69,14 +69,15 @@ std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod 
   s.fluid.push_back({0, scene::Box{{0, 0, 0}, {0.2, 0.4, 0}}});
   s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {0.6, 0.5, 0}}, true};
   s.domain.box = {{-0.03, -0.03, 0}, {0.63, 1.0, 0}};
+  s.solver.scheme = scheme;
   s.solver.density = density;
   s.solver.shifting = shifting;
   s.solver.artificial_stress = artificial_stress;
   s.solver.clamp_negative_pressure = clamp;
-  Wcsph<2> simulation(s);
-  for (int k = 0; k < 100; ++k) simulation.step();
-  const auto& fluid = simulation.fluid();
-  const auto& f = simulation.fluid_fields();
+  const auto simulation = make_simulation<2>(s);
+  for (int k = 0; k < 100; ++k) simulation->step();
+  const auto& fluid = simulation->fluid();
+  const auto& f = simulation->fluid_fields();
   std::vector<Real> state;
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     for (int d = 0; d < 2; ++d) {
@@ -84,33 +85,45 @@ std::vector<Real> wcsph_state_after_100_steps(int threads, scene::DensityMethod 
       state.push_back(fluid[f.velocity].component[d][i]);
     }
     state.push_back(fluid[f.density][i]);
+    state.push_back(fluid[f.pressure][i]);
     state.push_back(static_cast<Real>(fluid[fluid.id()][i]));
   }
-  state.push_back(simulation.time());
+  state.push_back(simulation->time());
   const std::vector<scene::Probe> probes{{"wall", scene::ProbeType::pressure, {0, 0.1, 0}},
                                          {"bulk", scene::ProbeType::pressure, {0.1, 0.05, 0}},
                                          {"gauge", scene::ProbeType::water_height, {0.15, 0, 0}}};
-  for (const double reading : read_probes<2>(simulation, probes)) state.push_back(static_cast<Real>(reading));
+  for (const double reading : read_probes<2>(*simulation, probes)) state.push_back(static_cast<Real>(reading));
   return state;
 }
 
 TEST(ThreadDeterminism, WcsphStateAfter100StepsIsBitwiseIdentical) {
   for (auto density : {scene::DensityMethod::summation, scene::DensityMethod::continuity}) {
     for (auto shifting : {scene::Shifting::none, scene::Shifting::fickian}) {
-      const auto one = wcsph_state_after_100_steps(1, density, shifting);
-      const auto two = wcsph_state_after_100_steps(2, density, shifting);
+      const auto one = state_after_100_steps(1, scene::Scheme::wcsph, density, shifting);
+      const auto two = state_after_100_steps(2, scene::Scheme::wcsph, density, shifting);
       EXPECT_TRUE(same_bytes(one, two));
     }
   }
 }
 
+// The incompressible schemes add the Jacobi sweeps, the wall pressure of each sweep and the
+// error reductions that end a solve: 100 steps of the same dam break, bitwise the same.
+TEST(ThreadDeterminism, IncompressibleStateAfter100StepsIsBitwiseIdentical) {
+  for (auto scheme : {scene::Scheme::dfsph, scene::Scheme::iisph}) {
+    const auto one = state_after_100_steps(1, scheme, scene::DensityMethod::summation, scene::Shifting::none);
+    const auto two = state_after_100_steps(2, scheme, scene::DensityMethod::summation, scene::Shifting::none);
+    EXPECT_TRUE(same_bytes(one, two)) << scheme_name(scheme);
+  }
+}
+
 TEST(ThreadDeterminism, WcsphWithArtificialStressIsBitwiseIdentical) {
   const auto summation = scene::DensityMethod::summation;
-  const auto one = wcsph_state_after_100_steps(1, summation, scene::Shifting::none, 0.2, false);
-  const auto two = wcsph_state_after_100_steps(2, summation, scene::Shifting::none, 0.2, false);
+  const auto one = state_after_100_steps(1, scene::Scheme::wcsph, summation, scene::Shifting::none, 0.2, false);
+  const auto two = state_after_100_steps(2, scene::Scheme::wcsph, summation, scene::Shifting::none, 0.2, false);
   EXPECT_TRUE(same_bytes(one, two));
   // The term acted: the state differs from the same run without it.
-  EXPECT_FALSE(same_bytes(one, wcsph_state_after_100_steps(1, summation, scene::Shifting::none, 0, false)));
+  EXPECT_FALSE(
+      same_bytes(one, state_after_100_steps(1, scene::Scheme::wcsph, summation, scene::Shifting::none, 0, false)));
 }
 
 }  // namespace

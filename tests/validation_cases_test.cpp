@@ -15,10 +15,10 @@
 namespace tide::validation {
 namespace {
 
-RunRecord run_at_test_resolution(const std::string& name) {
+RunRecord run_at_test_resolution(const std::string& name, const Variant& variant = Variant{}) {
   const Case* c = find_case(name);
   EXPECT_NE(c, nullptr) << name;
-  return c ? c->run(c->test_resolution, Variant{}) : RunRecord{};
+  return c ? c->run(c->test_resolution, variant) : RunRecord{};
 }
 
 double metric(const RunRecord& record, const std::string& name) {
@@ -82,6 +82,18 @@ TEST(ValidationCases, DamBreakFrontFollowsTheExperiments) {
   EXPECT_LE(metric(r, "start_offset"), 0.4);
   EXPECT_LE(metric(r, "front_error_after_offset"), 0.04);
   EXPECT_LE(metric(r, "front_error_after_offset_ko"), 0.045);
+}
+
+// The incompressible schemes on the same dam break and by the same criterion (velocity limit,
+// ~125 steps instead of ~1900). Measured at a/Δx = 20 (double): DFSPH δT = 0.254, 2.04% (raw
+// 12.4%); IISPH δT = 0.253, 2.09% (raw 12.2%); about 5 and 13 sweeps per step.
+TEST(ValidationCases, DamBreakFrontFollowsTheExperimentsIncompressible) {
+  for (const std::string scheme : {"dfsph", "iisph"}) {
+    const RunRecord r = run_at_test_resolution("dam_break_2d", Variant{scheme});
+    EXPECT_GE(metric(r, "start_offset"), 0.1) << scheme;
+    EXPECT_LE(metric(r, "start_offset"), 0.4) << scheme;
+    EXPECT_LE(metric(r, "front_error_after_offset"), 0.04) << scheme;
+  }
 }
 
 // H/Δx = 40 (3200 particles, 8257 steps, 45 s on 2 shared cores): against Buchner's downstream-wall

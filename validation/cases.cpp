@@ -20,7 +20,7 @@ const Case* find_case(std::string_view name) {
 }
 
 const std::vector<std::string>& scheme_names() {
-  static const std::vector<std::string> names{"wcsph", "wcsph_continuity"};
+  static const std::vector<std::string> names{"wcsph", "wcsph_continuity", "dfsph", "iisph"};
   return names;
 }
 

@@ -7,20 +7,30 @@
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/equation_of_state.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
 
+/// The δ-SPH density diffusion of the continuity equation (absent: none).
+template <int D>
+struct DensityDiffusion {
+  const EquationOfState& eos;
+  Vector<D> gravity;
+  Real delta = 0;
+  Real sound_speed = 0;
+};
+
 /// Dρ_i/dt = Σ_j m_j v_ij·∇W_ij (Monaghan 1992, eq. 2.9) over fluid and wall neighbours (a wall
-/// particle moving with its wall's surface velocity), plus the density diffusion of Molteni & Colagrossi 2009 (eq. 9),
+/// particle moving with its wall's surface velocity), into f.density_rate; with `diffusion`, plus
+/// the density diffusion of Molteni & Colagrossi 2009 (eq. 9),
 /// δ h c0 Σ_j 2 (ρ_j − ρ_i − ρ^H_ji) (x_ji·∇W_ij) / (r² + 0.01 h²) · m_j/ρ_j, between fluid
 /// particles only. ρ^H_ji, the hydrostatic density difference between j and i, is subtracted as
 /// in Fourtakas et al. 2019 (eq. 11): diffusing it would slowly flatten the hydrostatic density
 /// profile under gravity. ρ^H_ji = ρ(p = −ρ0 g·x_ij) − ρ0 from the equation of state.
 template <int D, class Kernel>
-void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D>& gravity, ParticleSet<D>& fluid,
-                const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
-                const WallFields<D>& w, Real delta, Real sound_speed) {
+void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
+                const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
+                const DensityDiffusion<D>* diffusion) {
   const auto x = std::as_const(fluid)[f.position];
   const auto v = std::as_const(fluid)[f.velocity];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -30,9 +40,9 @@ void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D
   const ConstVectorView<D> surface_velocity = w.surface_velocity ? walls[*w.surface_velocity] : ConstVectorView<D>{};
   auto rate = fluid[f.density_rate];
   const Real h = kernel.smoothing_length();
-  const Real diffusion = delta * h * sound_speed;
-  const Real rest_density = eos.rest_density();
-  const Real rest_pressure = eos.pressure(rest_density);  // the background pressure
+  const Real diffusion_scale = diffusion ? diffusion->delta * h * diffusion->sound_speed : Real(0);
+  const Real rest_density = diffusion ? diffusion->eos.rest_density() : Real(0);
+  const Real rest_pressure = diffusion ? diffusion->eos.pressure(rest_density) : Real(0);  // the background pressure
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Vector<D> v_i = v[i];
     const Real rho_i = density[i];
@@ -41,10 +51,11 @@ void continuity(const Kernel& kernel, const EquationOfState& eos, const Vector<D
       if (j == i) return;
       const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
       sum += mass[j] * (v_i - v[j]).dot(grad_w);
-      if (diffusion == 0) return;  // δ = 0: skip the equation-of-state inversion per pair
+      if (!diffusion) return;
       const Real rho_j = density[j];
-      const Real hydrostatic = eos.density(rest_pressure - rest_density * gravity.dot(x_ij)) - rest_density;
-      sum += diffusion * 2 * (rho_j - rho_i - hydrostatic) * (-x_ij.dot(grad_w)) / (r2 + Real(0.01) * h * h) *
+      const Real hydrostatic =
+          diffusion->eos.density(rest_pressure - rest_density * diffusion->gravity.dot(x_ij)) - rest_density;
+      sum += diffusion_scale * 2 * (rho_j - rho_i - hydrostatic) * (-x_ij.dot(grad_w)) / (r2 + Real(0.01) * h * h) *
              (mass[j] / rho_j);
     });
     neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {

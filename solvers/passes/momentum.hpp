@@ -8,7 +8,7 @@
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
 
@@ -21,6 +21,18 @@ struct ViscositySettings {
   Real kinematic_viscosity = 0;
   Real smoothing_length = 0;
 };
+
+/// The viscosity settings of a scene, with the velocity scale c of the artificial viscosity.
+inline ViscositySettings viscosity_settings(const scene::Scene& scene, Real sound_speed, Real kinematic_viscosity,
+                                            Real smoothing_length) {
+  return {scene.solver.viscosity,
+          scene.walls.slip == scene::WallSlip::no_slip,
+          static_cast<Real>(scene.solver.alpha),
+          static_cast<Real>(scene.solver.beta),
+          sound_speed,
+          kinematic_viscosity,
+          smoothing_length};
+}
 
 /// Monaghan's (2000) artificial stress; `epsilon` = 0 compiles the pass without it.
 struct ArtificialStressSettings {
@@ -73,8 +85,10 @@ inline Real artificial_stress_weight(const Kernel& kernel, const ArtificialStres
 /// summed over fluid and wall neighbours (walls with their extrapolated p, ρ and velocity).
 /// With `ArtificialStress`, each pair's pressure term gains (R_i + R_j) (W_ij/W(Δx))^4, a
 /// repulsion between particles in tension that stops them clumping in pairs (Monaghan 2000,
-/// J. Comput. Phys. 159, the artificial pressure added to the equation of motion).
-template <int D, scene::ViscosityModel Model, bool ArtificialStress, class Kernel>
+/// J. Comput. Phys. 159, the artificial pressure added to the equation of motion). Without
+/// `WithPressure`, the non-pressure part only: what an incompressible scheme integrates before
+/// its pressure solve.
+template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, class Kernel>
 void momentum(const Kernel& kernel, const ViscositySettings& settings,
               [[maybe_unused]] const ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
               const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
@@ -111,19 +125,43 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
       const Real rho_j = density[j];
       const Real r = std::sqrt(r2);
       const Vector<D> grad_w = kernel.gradient(x_ij, r);
-      a -= (mass[j] * pressure_term(pressure[j] / (rho_j * rho_j), r)) * grad_w;
+      if constexpr (WithPressure) a -= (mass[j] * pressure_term(pressure[j] / (rho_j * rho_j), r)) * grad_w;
       a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
     });
+    if (!WithPressure && !settings.walls_viscous) {
+      acceleration.set(i, a);
+      return;
+    }
     neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
       const Real rho_b = wall_density[b];
       const Real r = std::sqrt(r2);
       const Vector<D> grad_w = kernel.gradient(x_ib, r);
-      a -= (wall_mass[b] * pressure_term(wall_pressure[b] / (rho_b * rho_b), r)) * grad_w;
+      if constexpr (WithPressure) a -= (wall_mass[b] * pressure_term(wall_pressure[b] / (rho_b * rho_b), r)) * grad_w;
       if (settings.walls_viscous)
         a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
     });
     acceleration.set(i, a);
   });
+}
+
+/// momentum() compiled for the viscosity model of `settings` and for artificial stress on or off,
+/// picked once per pass outside the particle loop: a scene without artificial stress runs a pass
+/// without it.
+template <int D, bool WithPressure = true, class Kernel>
+void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, const ArtificialStressSettings& stress,
+                        ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
+                        const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity) {
+  const auto run = [&]<scene::ViscosityModel Model, bool Stress>() {
+    momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, neighbors, walls, w, gravity);
+  };
+  const bool with_stress = WithPressure && stress.epsilon > 0;
+  if (settings.model == scene::ViscosityModel::artificial) {
+    with_stress ? run.template operator()<scene::ViscosityModel::artificial, WithPressure>()
+                : run.template operator()<scene::ViscosityModel::artificial, false>();
+  } else {
+    with_stress ? run.template operator()<scene::ViscosityModel::laminar, WithPressure>()
+                : run.template operator()<scene::ViscosityModel::laminar, false>();
+  }
 }
 
 }  // namespace tide::passes

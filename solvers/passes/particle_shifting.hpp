@@ -9,7 +9,7 @@
 
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
 

@@ -5,10 +5,20 @@
 #include <algorithm>
 
 #include "tide/core/parallel.hpp"
+#include "tide/solvers/equation_of_state.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
+
+/// How wall pressure follows the fluid's. Without an equation of state (the incompressible
+/// schemes, whose pressure is not a function of density) the walls keep their density ρ0.
+template <int D>
+struct WallPressureExtrapolation {
+  const EquationOfState* eos = nullptr;
+  Vector<D> gravity;
+  bool clamp_negative_pressure = true;
+};
 
 /// Adami, Hu & Adams 2012, eq. 27 for a wall that does not accelerate: p_w = (Σ_f p_f W_wf +
 /// g·Σ_f ρ_f x_wf W_wf) / Σ_f W_wf, and ρ_w from the equation of state (eq. 28). The velocity a
@@ -16,10 +26,11 @@ namespace tide::passes {
 /// own velocity v_s, v_w = 2 v_s − Σ_f v_f W_wf / Σ_f W_wf (eq. 22–23). Walls with no fluid
 /// neighbour get p = 0 (plus the background pressure), ρ = ρ0, v = v_s. The fluid's pressure
 /// clamp applies to walls too: a wall particle beside the free surface can extrapolate to p < 0.
+/// Without `pressure_rule`, the velocity only (p and ρ of the walls are left as they are).
 template <int D, class Kernel>
 void wall_state(const Kernel& kernel, ParticleSet<D>& walls, const WallFields<D>& w, const ParticleSet<D>& fluid,
-                const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors, const EquationOfState& eos,
-                const Vector<D>& gravity, bool clamp_negative_pressure) {
+                const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
+                const WallPressureExtrapolation<D>* pressure_rule) {
   const auto wall_x = std::as_const(walls)[w.position];
   auto wall_pressure = walls[w.pressure];
   auto wall_density = walls[w.density];
@@ -43,16 +54,17 @@ void wall_state(const Kernel& kernel, ParticleSet<D>& walls, const WallFields<D>
       hydrostatic_sum += (density[j] * weight) * x_wf;
       velocity_sum += weight * v[j];
     });
+    wall_velocity.set(b, weight_sum > 0 ? Vector<D>(2 * own_velocity - velocity_sum / weight_sum) : own_velocity);
+    if (!pressure_rule) return;
+    const EquationOfState* eos = pressure_rule->eos;
     if (weight_sum > 0) {
-      const Real extrapolated = (pressure_sum + gravity.dot(hydrostatic_sum)) / weight_sum;
-      const Real p = clamp_negative_pressure ? std::max(extrapolated, Real(0)) : extrapolated;
+      const Real extrapolated = (pressure_sum + pressure_rule->gravity.dot(hydrostatic_sum)) / weight_sum;
+      const Real p = pressure_rule->clamp_negative_pressure ? std::max(extrapolated, Real(0)) : extrapolated;
       wall_pressure[b] = p;
-      wall_density[b] = eos.density(p);
-      wall_velocity.set(b, 2 * own_velocity - velocity_sum / weight_sum);
+      if (eos) wall_density[b] = eos->density(p);
     } else {
-      wall_pressure[b] = eos.pressure(eos.rest_density());
-      wall_density[b] = eos.rest_density();
-      wall_velocity.set(b, own_velocity);
+      wall_pressure[b] = eos ? eos->pressure(eos->rest_density()) : Real(0);
+      if (eos) wall_density[b] = eos->rest_density();
     }
   });
 }

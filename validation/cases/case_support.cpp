@@ -19,6 +19,10 @@ void apply_variant(scene::Scene& scene, const Variant& variant) {
   } else if (variant.scheme == "wcsph_continuity") {
     scene.solver.density = scene::DensityMethod::continuity;
     scene.solver.delta_sph = 0.1;
+  } else if (variant.scheme == "dfsph") {
+    scene.solver.scheme = scene::Scheme::dfsph;
+  } else if (variant.scheme == "iisph") {
+    scene.solver.scheme = scene::Scheme::iisph;
   } else {
     throw std::invalid_argument("unknown scheme \"" + variant.scheme + "\"");
   }
@@ -55,14 +59,14 @@ Curve read_reference(const std::string& file, int x_column, int y_column) {
 }
 
 template <int D>
-Vector<D> shepard_velocity(const Wcsph<D>& simulation, const Vector<D>& point) {
+Vector<D> shepard_velocity(const Simulation<D>& simulation, const Vector<D>& point) {
   const auto v = simulation.fluid()[simulation.fluid_fields().velocity];
   return shepard_interpolation<D>(
       simulation, point, [&](Index j, const Vector<D>&) { return Vector<D>(v[j]); },
       Vector<D>(Vector<D>::Constant(std::numeric_limits<Real>::quiet_NaN())));
 }
 
-template Vector<2> shepard_velocity<2>(const Wcsph<2>&, const Vector<2>&);
-template Vector<3> shepard_velocity<3>(const Wcsph<3>&, const Vector<3>&);
+template Vector<2> shepard_velocity<2>(const Simulation<2>&, const Vector<2>&);
+template Vector<3> shepard_velocity<3>(const Simulation<3>&, const Vector<3>&);
 
 }  // namespace tide::validation

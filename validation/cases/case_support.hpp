@@ -10,7 +10,7 @@
 
 #include "tide/core/scene.hpp"
 #include "tide/solvers/front_offset_fit.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/simulation.hpp"
 #include "tide/validation/case.hpp"
 
 namespace tide::validation {
@@ -30,7 +30,7 @@ Curve read_reference(const std::string& file, int x_column = 0, int y_column = 1
 /// Steps `simulation` until its time reaches `end`, calling `observe(simulation)` after each
 /// step; returns the wall seconds spent stepping (observers included, which are cheap).
 template <int D, class Observer>
-double run_until(Wcsph<D>& simulation, double end, Observer&& observe) {
+double run_until(Simulation<D>& simulation, double end, Observer&& observe) {
   const auto start = std::chrono::steady_clock::now();
   while (simulation.time() < end * (1 - 1e-12)) {
     simulation.step();
@@ -40,8 +40,8 @@ double run_until(Wcsph<D>& simulation, double end, Observer&& observe) {
 }
 
 template <int D>
-RunRecord make_record(const std::string& case_name, const Variant& variant, int resolution, const Wcsph<D>& simulation,
-                      double wall_seconds, std::vector<Metric> metrics) {
+RunRecord make_record(const std::string& case_name, const Variant& variant, int resolution,
+                      const Simulation<D>& simulation, double wall_seconds, std::vector<Metric> metrics) {
   RunRecord record;
   record.case_name = case_name;
   record.scheme = variant.scheme;
@@ -73,7 +73,7 @@ class RelativeL2 {
 /// interpolant normalised so that it reproduces a uniform field exactly, also beside a wall). NaN
 /// when no fluid particle lies within the support, so that a void at a probe shows in the metrics.
 template <int D>
-Vector<D> shepard_velocity(const Wcsph<D>& simulation, const Vector<D>& point);
+Vector<D> shepard_velocity(const Simulation<D>& simulation, const Vector<D>& point);
 
 // Each case, built in its own file.
 Case hydrostatic_case(int dimension);

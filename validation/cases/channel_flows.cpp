@@ -67,12 +67,13 @@ scene::Scene channel_scene(int cells, const Variant& variant, bool moving_upper_
 
 RunRecord run_channel(const std::string& name, int cells, const Variant& variant, bool couette) {
   const scene::Scene s = channel_scene(cells, variant, couette);
-  Wcsph<2> simulation(s);
+  const auto simulation_owner = make_simulation<2>(s);
+  Simulation<2>& simulation = *simulation_owner;
   double wall_seconds = 0;
   double error_sum = 0;
   double steady_error = 0;
   for (double t : check_times) {
-    wall_seconds += run_until(simulation, t, [](const Wcsph<2>&) {});
+    wall_seconds += run_until(simulation, t, [](const Simulation<2>&) {});
     const auto x = simulation.fluid()[simulation.fluid_fields().position];
     const auto v = simulation.fluid()[simulation.fluid_fields().velocity];
     RelativeL2 error;

@@ -36,10 +36,11 @@ scene::Scene column_scene(int cells, const Variant& variant) {
 Curve dam_break_front(int cells, const Variant& variant, double end_T, double* wall_seconds, std::size_t* particles,
                       std::uint64_t* steps) {
   const scene::Scene s = column_scene(cells, variant);
-  Wcsph<2> simulation(s);
+  const auto simulation_owner = make_simulation<2>(s);
+  Simulation<2>& simulation = *simulation_owner;
   const double time_scale = std::sqrt(2 * gravity / column_width);
   Curve front;
-  const auto track = [&](const Wcsph<2>& sim) {
+  const auto track = [&](const Simulation<2>& sim) {
     const auto x = sim.fluid()[sim.fluid_fields().position];
     double x_front = 0;
     for (std::size_t i = 0; i < sim.fluid().size(); ++i) x_front = std::max<double>(x_front, x[i][0]);

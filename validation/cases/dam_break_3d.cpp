@@ -30,8 +30,8 @@ RunRecord run_lobovsky(int cells, const Variant& variant) {
   const auto probe =
       std::find_if(s.probes.begin(), s.probes.end(), [](const scene::Probe& p) { return p.name == buchner_probe; });
   if (probe == s.probes.end()) throw std::runtime_error(s.source + ": no probe \"" + buchner_probe + "\"");
-  Wcsph<3> simulation(s);
-  return run_against_buchner<3>("dam_break_3d", variant, cells, simulation, to_vector<3>(probe->position), height);
+  const auto simulation = make_simulation<3>(s);
+  return run_against_buchner<3>("dam_break_3d", variant, cells, *simulation, to_vector<3>(probe->position), height);
 }
 
 }  // namespace

@@ -33,8 +33,8 @@ scene::Scene buchner_scene(int cells, const Variant& variant) {
 }
 
 RunRecord run_buchner(int cells, const Variant& variant) {
-  Wcsph<2> simulation(buchner_scene(cells, variant));
-  return run_against_buchner<2>("dam_break_buchner", variant, cells, simulation,
+  const auto simulation = make_simulation<2>(buchner_scene(cells, variant));
+  return run_against_buchner<2>("dam_break_buchner", variant, cells, *simulation,
                                 Vector<2>{Real(tank_length), Real(probe_height)}, height);
 }
 

@@ -51,8 +51,9 @@ template <int D>
 RunRecord run_tank(const std::string& name, int rows, const Variant& variant) {
   const Tank t = tank(D);
   const scene::Scene s = tank_scene(D, rows, variant);
-  Wcsph<D> simulation(s);
-  const double wall_seconds = run_until(simulation, t.settle_time, [](const Wcsph<D>&) {});
+  const auto simulation_owner = make_simulation<D>(s);
+  Simulation<D>& simulation = *simulation_owner;
+  const double wall_seconds = run_until(simulation, t.settle_time, [](const Simulation<D>&) {});
 
   // Compared where the kernel is complete: deeper than one support below the free surface.
   const double support = kernel_support_factor(s.kernel) * simulation.smoothing_length();

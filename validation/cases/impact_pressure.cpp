@@ -74,12 +74,12 @@ std::vector<Metric> buchner_metrics(const Curve& filtered) {
 
 template <int D>
 RunRecord run_against_buchner(const std::string& case_name, const Variant& variant, int resolution,
-                              Wcsph<D>& simulation, const Vector<D>& probe, double height) {
+                              Simulation<D>& simulation, const Vector<D>& probe, double height) {
   const double g = to_vector<D>(simulation.scene().gravity).norm();
   const double time_scale = std::sqrt(g / height);
-  const double pressure_scale = simulation.equation_of_state().rest_density() * g * height;
+  const double pressure_scale = simulation.rest_density() * g * height;
   Curve history;
-  const auto record = [&](const Wcsph<D>& sim) {
+  const auto record = [&](const Simulation<D>& sim) {
     history.x.push_back(sim.time() * time_scale);
     history.y.push_back(probe_pressure<D>(sim, probe) / pressure_scale);
   };
@@ -88,8 +88,10 @@ RunRecord run_against_buchner(const std::string& case_name, const Variant& varia
                      buchner_metrics(moving_average(history, impact_filter_width)));
 }
 
-template RunRecord run_against_buchner<2>(const std::string&, const Variant&, int, Wcsph<2>&, const Vector<2>&, double);
-template RunRecord run_against_buchner<3>(const std::string&, const Variant&, int, Wcsph<3>&, const Vector<3>&, double);
+template RunRecord run_against_buchner<2>(const std::string&, const Variant&, int, Simulation<2>&, const Vector<2>&,
+                                          double);
+template RunRecord run_against_buchner<3>(const std::string&, const Variant&, int, Simulation<3>&, const Vector<3>&,
+                                          double);
 
 std::vector<std::string> buchner_metric_notes() {
   return {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "tide/solvers/front_offset_fit.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/simulation.hpp"
 #include "tide/validation/case.hpp"
 
 namespace tide::validation {
@@ -34,7 +34,7 @@ std::vector<Metric> buchner_metrics(const Curve& filtered);
 /// buchner_metrics of the filtered history.
 template <int D>
 RunRecord run_against_buchner(const std::string& case_name, const Variant& variant, int resolution,
-                              Wcsph<D>& simulation, const Vector<D>& probe, double height);
+                              Simulation<D>& simulation, const Vector<D>& probe, double height);
 
 /// One line per metric of buchner_metrics, for Case::metric_notes.
 std::vector<std::string> buchner_metric_notes();

@@ -85,7 +85,7 @@ Curve interior(const Curve& table) {
 // at (x, L/2) for Table II's x, then u at (L/2, k L/200), k = 1 ... 199, where its minimum is sought.
 constexpr int minimum_search_points = 199;
 
-std::vector<double> centreline_samples(const Wcsph<2>& simulation, const Curve& u_table, const Curve& v_table) {
+std::vector<double> centreline_samples(const Simulation<2>& simulation, const Curve& u_table, const Curve& v_table) {
   std::vector<double> values;
   for (double y : u_table.x) values.push_back(shepard_velocity<2>(simulation, Vector<2>(side / 2, y))[0]);
   for (double x : v_table.x) values.push_back(shepard_velocity<2>(simulation, Vector<2>(x, side / 2))[1]);
@@ -96,12 +96,12 @@ std::vector<double> centreline_samples(const Wcsph<2>& simulation, const Curve& 
 
 // The centre-line samples averaged over one time unit ending at `end`, ten instants 0.1 apart: the
 // steady state, without the particle noise of a single instant.
-std::vector<double> time_averaged_samples(Wcsph<2>& simulation, double end, const Curve& u_table, const Curve& v_table,
-                                          double& wall_seconds) {
+std::vector<double> time_averaged_samples(Simulation<2>& simulation, double end, const Curve& u_table,
+                                          const Curve& v_table, double& wall_seconds) {
   constexpr int instants = 10;
   std::vector<double> mean;
   for (int k = instants - 1; k >= 0; --k) {
-    wall_seconds += run_until(simulation, end - 0.1 * k, [](const Wcsph<2>&) {});
+    wall_seconds += run_until(simulation, end - 0.1 * k, [](const Simulation<2>&) {});
     const std::vector<double> values = centreline_samples(simulation, u_table, v_table);
     mean.resize(values.size(), 0.0);
     for (std::size_t i = 0; i < values.size(); ++i) mean[i] += values[i] / instants;
@@ -124,7 +124,8 @@ RunRecord run_cavity(const CavitySetup& setup, int cells, const Variant& variant
   std::vector<double> reference = u_table.y;
   reference.insert(reference.end(), v_table.y.begin(), v_table.y.end());
 
-  Wcsph<2> simulation(cavity_scene(setup, cells, variant));
+  const auto simulation_owner = make_simulation<2>(cavity_scene(setup, cells, variant));
+  Simulation<2>& simulation = *simulation_owner;
   double wall_seconds = 0;
   std::vector<double> previous;
   std::vector<double> last;

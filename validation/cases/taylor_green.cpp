@@ -37,11 +37,12 @@ scene::Scene vortex_scene(int cells, const Variant& variant) {
 }
 
 RunRecord run_vortex(int cells, const Variant& variant) {
-  Wcsph<2> simulation(vortex_scene(cells, variant));
+  const auto simulation_owner = make_simulation<2>(vortex_scene(cells, variant));
+  Simulation<2>& simulation = *simulation_owner;
   // Least-squares slope of ln(max speed) against t over the run: the measured decay rate.
   double sum_t = 0, sum_l = 0, sum_tt = 0, sum_tl = 0;
   int samples = 0;
-  const auto sample = [&](const Wcsph<2>& s) {
+  const auto sample = [&](const Simulation<2>& s) {
     const double t = s.time();
     const double l = std::log(static_cast<double>(s.max_speed()));
     sum_t += t;

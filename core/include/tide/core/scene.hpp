@@ -119,7 +119,9 @@ inline Domain domain_around(const Container& container, double wall_thickness, i
   return domain;
 }
 
-enum class Scheme { wcsph };
+/// wcsph: weakly compressible, pressure from an equation of state. dfsph, iisph: incompressible,
+/// pressure from an implicit solve (Bender & Koschier 2017; Ihmsen et al. 2014).
+enum class Scheme { wcsph, dfsph, iisph };
 enum class EquationOfState { tait, linear };
 enum class DensityMethod { summation, continuity };
 enum class ViscosityModel { artificial, laminar };
@@ -144,6 +146,11 @@ struct Solver {
   double background_pressure = 0;       // Pa, added to the equation of state (closed or periodic flows)
   Shifting shifting = Shifting::none;   // particle shifting after each step (Lind et al. 2012)
   double artificial_stress = 0;         // ε of Monaghan's (2000) artificial stress; 0: off
+  // Incompressible schemes (dfsph, iisph) only:
+  double max_density_error = 0.0005;    // pressure solve ends when the mean density error is below this share of ρ0
+  double max_divergence_error = 0.001;  // DFSPH divergence solve: mean error of Δt Dρ/Dt, as a share of ρ0
+  int max_solver_iterations = 100;      // cap per pressure solve
+  int max_failed_solves = 10;           // consecutive steps whose solve missed its threshold before the run stops
 };
 
 struct Time {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "tide/core/scene.hpp"
-#include "tide/solvers/wcsph.hpp"
+#include "tide/solvers/simulation.hpp"
 
 namespace tide {
 
@@ -20,7 +20,8 @@ namespace tide {
 /// interpolant of Monaghan 1992, normalised). `quantity(j, x − x_j)` gives q_j, a Real or a
 /// Vector<D>; `no_fluid` is returned where no fluid particle is within reach.
 template <int D, class Value, class Quantity>
-Value shepard_interpolation(const Wcsph<D>& simulation, const Vector<D>& point, Quantity&& quantity, Value no_fluid) {
+Value shepard_interpolation(const Simulation<D>& simulation, const Vector<D>& point, Quantity&& quantity,
+                            Value no_fluid) {
   const auto& fluid = simulation.fluid();
   const auto& f = simulation.fluid_fields();
   const auto mass = fluid[f.mass];
@@ -58,7 +59,7 @@ Value shepard_interpolation(const Wcsph<D>& simulation, const Vector<D>& point, 
 /// of the equation of state at rest density (0, or the background pressure); negative readings
 /// are clamped to 0 where the scene clamps negative pressure.
 template <int D>
-Real probe_pressure(const Wcsph<D>& simulation, const Vector<D>& point);
+Real probe_pressure(const Simulation<D>& simulation, const Vector<D>& point);
 
 /// The fluid colour at `point`: the share of the kernel's volume there that holds fluid,
 ///   c(x) = Σ_f V_f W(x − x_f) / (1 − Σ_w V_w W(x − x_w)),   V = m / ρ0,
@@ -67,7 +68,7 @@ Real probe_pressure(const Wcsph<D>& simulation, const Vector<D>& point);
 /// volumes are used because summation density is low at a free surface (its kernel is
 /// truncated) and m/ρ would overstate the volume of exactly the particles that place the surface.
 template <int D>
-Real fluid_colour(const Wcsph<D>& simulation, const Vector<D>& point);
+Real fluid_colour(const Simulation<D>& simulation, const Vector<D>& point);
 
 /// The height of the free surface above `base` along the up direction (−gravity, or the last
 /// axis without gravity): the highest point of that line inside the domain where the fluid
@@ -75,19 +76,19 @@ Real fluid_colour(const Wcsph<D>& simulation, const Vector<D>& point);
 /// 1992), found by sampling the line every h/4 from the top down and interpolating linearly
 /// between the two samples around ½; 0 when no point of the line is in the fluid.
 template <int D>
-Real probe_water_height(const Wcsph<D>& simulation, const Vector<D>& base);
+Real probe_water_height(const Simulation<D>& simulation, const Vector<D>& base);
 
 /// Every probe of `probes` read from the current state, in order: pressures in Pa, heights in m.
 template <int D>
-std::vector<double> read_probes(const Wcsph<D>& simulation, const std::vector<scene::Probe>& probes);
+std::vector<double> read_probes(const Simulation<D>& simulation, const std::vector<scene::Probe>& probes);
 
-extern template Real probe_pressure<2>(const Wcsph<2>&, const Vector<2>&);
-extern template Real probe_pressure<3>(const Wcsph<3>&, const Vector<3>&);
-extern template Real fluid_colour<2>(const Wcsph<2>&, const Vector<2>&);
-extern template Real fluid_colour<3>(const Wcsph<3>&, const Vector<3>&);
-extern template Real probe_water_height<2>(const Wcsph<2>&, const Vector<2>&);
-extern template Real probe_water_height<3>(const Wcsph<3>&, const Vector<3>&);
-extern template std::vector<double> read_probes<2>(const Wcsph<2>&, const std::vector<scene::Probe>&);
-extern template std::vector<double> read_probes<3>(const Wcsph<3>&, const std::vector<scene::Probe>&);
+extern template Real probe_pressure<2>(const Simulation<2>&, const Vector<2>&);
+extern template Real probe_pressure<3>(const Simulation<3>&, const Vector<3>&);
+extern template Real fluid_colour<2>(const Simulation<2>&, const Vector<2>&);
+extern template Real fluid_colour<3>(const Simulation<3>&, const Vector<3>&);
+extern template Real probe_water_height<2>(const Simulation<2>&, const Vector<2>&);
+extern template Real probe_water_height<3>(const Simulation<3>&, const Vector<3>&);
+extern template std::vector<double> read_probes<2>(const Simulation<2>&, const std::vector<scene::Probe>&);
+extern template std::vector<double> read_probes<3>(const Simulation<3>&, const std::vector<scene::Probe>&);
 
 }  // namespace tide

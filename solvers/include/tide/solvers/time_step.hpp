@@ -13,15 +13,17 @@ namespace tide {
 /// stays at rest up to 1.5 and goes unstable from 2.
 inline constexpr Real max_stable_cfl = 1;
 
-/// Which stability limit set a time step.
-enum class TimeStepLimit { acoustic, viscous, force };
-inline constexpr std::size_t time_step_limit_count = 3;
+/// Which stability limit set a time step: acoustic (weakly compressible schemes), velocity
+/// (incompressible schemes), viscous or force.
+enum class TimeStepLimit { acoustic, velocity, viscous, force };
+inline constexpr std::size_t time_step_limit_count = 4;
 
 std::string_view time_step_limit_name(TimeStepLimit limit);
 
 struct TimeStepRule {
   Real smoothing_length = 0;
-  Real sound_speed = 0;
+  Real sound_speed = 0;          // 0: an incompressible scheme, limited by the flow speed instead
+  Real speed_floor = 0;          // incompressible: the speed the velocity limit assumes while the flow is slower
   Real kinematic_viscosity = 0;  // 0: no viscous limit
   Real cfl = Real(0.25);
   Real viscous_number = Real(0.125);
@@ -33,16 +35,18 @@ struct TimeStep {
   TimeStepLimit limit = TimeStepLimit::acoustic;
 };
 
-/// The adaptive step of explicit WCSPH: the smallest of the acoustic limit
-/// cfl·h/(c0 + |v|max), the viscous limit viscous_number·h²/ν and the force limit
-/// force_number·sqrt(h/|a|max) (Monaghan 1992; Morris, Fox & Zhu 1997).
+/// The adaptive step: the smallest of the acoustic limit cfl·h/(c0 + |v|max) (explicit WCSPH), or
+/// for an incompressible scheme (sound_speed = 0) the velocity limit cfl·h/max(|v|max, speed_floor)
+/// (Bender & Koschier 2017, Sec. 5: a particle moves at most a fraction of its support per step),
+/// the viscous limit viscous_number·h²/ν and the force limit force_number·sqrt(h/|a|max)
+/// (Monaghan 1992; Morris, Fox & Zhu 1997).
 TimeStep choose_time_step(const TimeStepRule& rule, Real max_speed, Real max_acceleration);
 
 /// Counts of binding limits over a stretch of steps.
 struct TimeStepTally {
   std::array<std::size_t, time_step_limit_count> counts{};
   void add(TimeStepLimit limit) { ++counts[static_cast<std::size_t>(limit)]; }
-  std::size_t total() const { return counts[0] + counts[1] + counts[2]; }
+  std::size_t total() const { return counts[0] + counts[1] + counts[2] + counts[3]; }
   TimeStepLimit most_frequent() const;
 };
 

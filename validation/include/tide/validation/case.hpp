@@ -21,7 +21,8 @@ struct Metric {
 };
 
 /// How a case is run: the scheme and the kernel.
-/// Schemes: "wcsph" (summation density), "wcsph_continuity" (continuity density with δ-SPH diffusion, δ = 0.1).
+/// Schemes: "wcsph" (summation density), "wcsph_continuity" (continuity density with δ-SPH diffusion, δ = 0.1),
+/// "dfsph" and "iisph" (incompressible, summation density).
 struct Variant {
   std::string scheme = "wcsph";
   KernelType kernel = KernelType::wendland_c2;

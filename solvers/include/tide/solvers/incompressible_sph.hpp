@@ -1,0 +1,99 @@
+#pragma once
+
+#include <cstdint>
+
+#include "tide/core/kernels/kernel.hpp"
+#include "tide/core/particle_set.hpp"
+#include "tide/core/scene.hpp"
+#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/incompressible_scheme.hpp"
+#include "tide/solvers/particle_fields.hpp"
+#include "tide/solvers/simulation.hpp"
+#include "tide/solvers/time_step.hpp"
+
+namespace tide {
+
+/// Handles of the fluid fields only the implicit pressure solves use.
+template <int D>
+struct PressureSolveFields {
+  ScalarField factor;  // α_i = 1/|∂ρ*_i/∂p_i| · Δt²: the Jacobi diagonal (passes/pressure_solve.hpp)
+  VectorField predicted_velocity;  // v*: the velocity before the pressure of the solve in progress
+  ScalarField density_excess;      // ρ*_i − ρ0 (density solve) or Δt Dρ_i/Dt (divergence solve) of the last sweep
+  ScalarField divergence_pressure;  // DFSPH only: the pressure of the divergence solve (slot unused otherwise)
+};
+
+/// Incompressible SPH, DFSPH or IISPH (IncompressibleScheme says which): density by summation,
+/// the non-pressure forces (viscosity of the WCSPH passes, gravity) integrated first, then the
+/// pressure that brings every particle's predicted density to ρ0 found by Jacobi sweeps, with an
+/// adaptive time step from the flow speed alone. Walls are the WCSPH wall particles, with their
+/// pressure extrapolated from the fluid's before every sweep (passes/pressure_solve.hpp). The first
+/// solve starts from the hydrostatic pressure. A solve that misses its threshold within the iteration cap logs a
+/// warning; solver.max_failed_solves consecutive steps with such a miss stop the run with an
+/// InstabilityError. Every pass gathers, so results are bitwise identical for any thread count.
+template <int D>
+class IncompressibleSph final : public Simulation<D> {
+ public:
+  explicit IncompressibleSph(const scene::Scene& scene);
+
+  StepReport step() override;
+
+  const scene::Scene& scene() const override { return scene_; }
+  double time() const override { return time_; }
+  std::uint64_t step_count() const override { return step_count_; }
+  const ParticleSet<D>& fluid() const override { return fluid_; }
+  const ParticleSet<D>& walls() const override { return walls_; }
+  const FluidFields<D>& fluid_fields() const override { return fluid_fields_; }
+  const WallFields<D>& wall_fields() const override { return wall_fields_; }
+  const NeighborGrid<D>& fluid_grid() const override { return neighbors_.fluid_grid(); }
+  const NeighborGrid<D>& wall_grid() const override { return neighbors_.wall_grid(); }
+  const AnyKernel<D>& kernel() const override { return kernel_; }
+  Vector<D> gravity() const override { return gravity_; }
+  Real rest_density() const override { return rest_density_; }
+  const PressureSolveFields<D>& solve_fields() const { return solve_fields_; }
+  const IncompressibleScheme& scheme() const { return scheme_; }
+  Real relaxation() const { return relaxation_; }
+  Real smoothing_length() const override { return smoothing_length_; }
+  Real max_speed() const override { return max_speed_; }
+  std::size_t removed_total() const override { return neighbors_.fluid_grid().removed_total(); }
+  const PassTimes& pass_times() const override { return pass_times_; }
+  double bytes_per_particle() const override;
+
+ private:
+  enum class Target { density, divergence };
+
+  void compute_density_and_factor();
+  void compute_non_pressure_acceleration();
+  SolveReport solve(ScalarField pressure, Target target, Real warm_start, const Vector<D>& wall_gravity, Real dt);
+  void count_failures(const StepReport& report);
+  void check_state();
+
+  scene::Scene scene_;
+  IncompressibleScheme scheme_;
+  Real relaxation_ = 1;  // ω of the Jacobi sweeps for this kernel (effective_relaxation)
+  Real smoothing_length_;
+  AnyKernel<D> kernel_;
+  Real rest_density_;
+  Real reference_sound_speed_;  // c0 of the material: velocity scale of the artificial viscosity and speed bound
+  Real kinematic_viscosity_;
+  Vector<D> gravity_;  // at the time the non-pressure acceleration was computed
+  TimeStepRule time_step_rule_;
+  ParticleSet<D> fluid_;
+  ParticleSet<D> walls_;
+  FluidFields<D> fluid_fields_;
+  PressureSolveFields<D> solve_fields_;
+  WallFields<D> wall_fields_;
+  FluidWallNeighbors<D> neighbors_;
+  double time_ = 0;
+  std::uint64_t step_count_ = 0;
+  Real max_speed_ = 0;
+  Real max_acceleration_ = 0;
+  int failed_steps_in_a_row_ = 0;
+  std::size_t worst_particle_ = 0;  // largest excess of the last solve, for the diagnosis
+  Real worst_excess_ = 0;
+  PassTimes pass_times_;
+};
+
+extern template class IncompressibleSph<2>;
+extern template class IncompressibleSph<3>;
+
+}  // namespace tide

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <optional>
+
+#include "tide/core/particle_set.hpp"
+
+namespace tide {
+
+/// Handles of the fluid fields the passes of every scheme use.
+template <int D>
+struct FluidFields {
+  VectorField position;
+  VectorField velocity;
+  VectorField acceleration;  // WCSPH: total; incompressible schemes: the non-pressure part
+  ScalarField mass;
+  ScalarField density;
+  ScalarField pressure;
+  ScalarField density_rate;         // continuity density, and the incompressible solves (slot unused otherwise)
+  VectorField shift;                // only with particle shifting (slot unused otherwise)
+  ScalarField position_divergence;  // only with particle shifting: ∇·r, the free-surface marker
+};
+
+/// Handles of the wall-particle fields (Adami, Hu & Adams 2012).
+template <int D>
+struct WallFields {
+  VectorField position;
+  VectorField velocity;  // extrapolated fluid velocity mirrored for the no-slip condition
+  ScalarField mass;
+  ScalarField density;
+  ScalarField pressure;
+  std::optional<VectorField> surface_velocity;  // the wall's own velocity; only when some wall moves
+};
+
+}  // namespace tide

@@ -1,0 +1,284 @@
+#include "tide/solvers/incompressible_sph.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include "passes/continuity.hpp"
+#include "passes/density_summation.hpp"
+#include "passes/momentum.hpp"
+#include "passes/pressure_solve.hpp"
+#include "passes/wall_state.hpp"
+#include "simulation_setup.hpp"
+#include "state_check.hpp"
+#include "tide/core/log.hpp"
+#include "tide/core/parallel.hpp"
+#include "tide/solvers/instability.hpp"
+
+namespace tide {
+namespace {
+
+using setup::lap;
+
+// Iterations each solve makes at least: two for the density solve, one for the divergence solve
+// (the loop conditions of Ihmsen et al. 2014, Alg. 1, and Bender & Koschier 2017, Alg. 2–3).
+constexpr int min_density_iterations = 2;
+constexpr int min_divergence_iterations = 1;
+
+// Sum and largest value of the positive excesses of one sweep, with the particle that has it.
+struct ExcessSummary {
+  Real sum = 0;
+  Real max = 0;
+  std::size_t worst = 0;
+
+  static ExcessSummary combine(const ExcessSummary& a, const ExcessSummary& b) {
+    const bool b_worse = b.max > a.max;
+    return {a.sum + b.sum, b_worse ? b.max : a.max, b_worse ? b.worst : a.worst};
+  }
+};
+
+std::string percent(double share) {
+  std::ostringstream text;
+  text.precision(3);
+  text << 100 * share << '%';
+  return text.str();
+}
+
+}  // namespace
+
+template <int D>
+IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
+    : scene_(scene),
+      scheme_(incompressible_scheme(scene.solver.scheme)),
+      smoothing_length_(static_cast<Real>(scene.smoothing_ratio * scene.particle_spacing)),
+      kernel_(make_kernel<D>(scene.kernel, smoothing_length_)),
+      rest_density_(static_cast<Real>(setup::single_material(scene).rest_density)),
+      reference_sound_speed_(setup::reference_sound_speed(setup::single_material(scene))),
+      kinematic_viscosity_(static_cast<Real>(setup::single_material(scene).kinematic_viscosity)),
+      gravity_(setup::gravity_at<D>(scene, scene.time.start)),
+      neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_) {
+  if (!(reference_sound_speed_ > 0))
+    throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
+  relaxation_ =
+      effective_relaxation(scheme_, jacobi_spectral_bound<D>(kernel_, static_cast<Real>(scene.particle_spacing)));
+  const Real particle_mass = setup::particle_mass<D>(scene, kernel_, rest_density_);
+  fluid_ = setup::make_fluid<D>(scene, particle_mass, rest_density_, fluid_fields_);
+  fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
+  solve_fields_ = {fluid_.add_scalar("pressure_factor"), fluid_.add_vector("predicted_velocity"),
+                   fluid_.add_scalar("density_excess"), ScalarField{}};
+  if (scheme_.divergence_solve) solve_fields_.divergence_pressure = fluid_.add_scalar("divergence_pressure");
+  walls_ = setup::make_walls<D>(scene, particle_mass, rest_density_, wall_fields_);
+  // The first solve starts from the pressure of the fluid at rest: a Jacobi sweep carries
+  // information about one kernel support, so from zero a deep column would need of the order of
+  // (depth / h)² sweeps to take its own weight.
+  setup::hydrostatic_pressure<D>(fluid_, setup::hydrostatic_part<D>(scene_, gravity_),
+                                 static_cast<Real>(scene.particle_spacing), rest_density_,
+                                 fluid_[fluid_fields_.pressure]);
+
+  time_step_rule_.smoothing_length = smoothing_length_;
+  time_step_rule_.sound_speed = 0;
+  // Until the flow moves, the velocity limit assumes a tenth of the expected maximum speed c0/10.
+  time_step_rule_.speed_floor = reference_sound_speed_ / 100;
+  // The viscous forces are explicit: without the acoustic limit, which bounds WCSPH's step far
+  // below it, the artificial viscosity needs its own limit, from its shear viscosity
+  // ν = α c0 h / (2 (d + 2)) (Monaghan 2005, Sec. 4.4).
+  time_step_rule_.kinematic_viscosity =
+      scene.solver.viscosity == scene::ViscosityModel::laminar
+          ? kinematic_viscosity_
+          : static_cast<Real>(scene.solver.alpha) * reference_sound_speed_ * smoothing_length_ / (2 * (D + 2));
+  time_step_rule_.cfl = static_cast<Real>(scene.solver.cfl);
+  time_step_rule_.viscous_number = static_cast<Real>(scene.solver.viscous_number);
+  time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
+  time_ = scene.time.start;
+
+  neighbors_.set_walls(walls_);
+  neighbors_.update_fluid(fluid_);
+  compute_density_and_factor();
+  compute_non_pressure_acceleration();
+  check_state();
+}
+
+template <int D>
+void IncompressibleSph<D>::compute_density_and_factor() {
+  std::visit(
+      [&](const auto& kernel) {
+        passes::density_summation<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
+                                     [](std::size_t, Real) {});
+        passes::pressure_factor<D>(kernel, fluid_, fluid_fields_, solve_fields_, neighbors_, walls_, wall_fields_);
+      },
+      kernel_);
+}
+
+template <int D>
+void IncompressibleSph<D>::compute_non_pressure_acceleration() {
+  const passes::ViscositySettings viscosity =
+      passes::viscosity_settings(scene_, reference_sound_speed_, kinematic_viscosity_, smoothing_length_);
+  auto clock = std::chrono::steady_clock::now();
+  std::visit(
+      [&](const auto& kernel) {
+        if (viscosity.walls_viscous) {
+          passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, nullptr);
+          lap(clock, pass_times_.wall_state);
+        }
+        passes::fluid_acceleration<D, false>(kernel, viscosity, {}, fluid_, fluid_fields_, neighbors_, walls_,
+                                             wall_fields_, gravity_);
+        lap(clock, pass_times_.momentum);
+      },
+      kernel_);
+}
+
+template <int D>
+SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target target, Real warm_start,
+                                        const Vector<D>& wall_gravity, Real dt) {
+  const bool density_target = target == Target::density;
+  const Real threshold =
+      static_cast<Real>(density_target ? scene_.solver.max_density_error : scene_.solver.max_divergence_error);
+  const int min_iterations = density_target ? min_density_iterations : min_divergence_iterations;
+  const int max_iterations = scene_.solver.max_solver_iterations;
+  auto pressure = fluid_[pressure_field];
+  for_each_particle(fluid_.size(), [&](std::size_t i) { pressure[i] *= warm_start; });
+
+  const auto density = std::as_const(fluid_)[fluid_fields_.density];
+  const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
+  const auto factor = std::as_const(fluid_)[solve_fields_.factor];
+  auto excess = fluid_[solve_fields_.density_excess];
+  const Real count = static_cast<Real>(std::max<std::size_t>(fluid_.size(), 1));
+  SolveReport report;
+  std::visit(
+      [&](const auto& kernel) {
+        const passes::WallPressureExtrapolation<D> wall_rule{nullptr, wall_gravity, true};
+        FluidFields<D> solved = fluid_fields_;
+        solved.pressure = pressure_field;
+        while (true) {
+          passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, solved, neighbors_, &wall_rule);
+          passes::pressure_velocity<D>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, neighbors_, walls_,
+                                       wall_fields_, dt);
+          passes::continuity<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_, nullptr);
+          // ρ*_i − ρ0 = ρ_i + Δt Dρ_i/Dt − ρ0 after the step (density solve), or Δt Dρ_i/Dt
+          // (divergence solve). The error is that of the complementarity problem p ≥ 0, ρ* ≤ ρ0,
+          // p (ρ* − ρ0) = 0: where p > 0 any deviation, where p = 0 compression only (a free
+          // surface may expand).
+          const ExcessSummary summary = reduce(
+              fluid_.size(), ExcessSummary{},
+              [&](std::size_t i) {
+                const Real e = (density_target ? density[i] - rest_density_ : Real(0)) + dt * rate[i];
+                excess[i] = e;
+                const Real deviation = pressure[i] > 0 ? std::abs(e) : std::max(e, Real(0));
+                return ExcessSummary{deviation, deviation, i};
+              },
+              ExcessSummary::combine);
+          report.error = static_cast<double>(summary.sum / (count * rest_density_));
+          report.converged = report.error <= threshold;
+          worst_particle_ = summary.worst;
+          worst_excess_ = summary.max;
+          if ((report.converged && report.iterations >= min_iterations) || report.iterations >= max_iterations) break;
+          // Projected Jacobi: p stays ≥ 0, so the fluid takes no tension (Ihmsen et al. 2014, Alg. 1).
+          for_each_particle(fluid_.size(), [&](std::size_t i) {
+            pressure[i] = std::max(pressure[i] + relaxation_ * factor[i] * excess[i] / (dt * dt), Real(0));
+          });
+          ++report.iterations;
+        }
+      },
+      kernel_);
+  return report;
+}
+
+template <int D>
+StepReport IncompressibleSph<D>::step() {
+  StepReport report;
+  report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
+  const Real dt = report.time_step.dt;
+  auto clock = std::chrono::steady_clock::now();
+  {
+    auto predicted = fluid_[solve_fields_.predicted_velocity];
+    const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
+    const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
+    for_each_particle(fluid_.size(), [&](std::size_t i) { predicted.set(i, v[i] + dt * a[i]); });
+  }
+  lap(clock, pass_times_.integration);
+  report.density_solve = solve(fluid_fields_.pressure, Target::density, scheme_.warm_start, gravity_, dt);
+  lap(clock, pass_times_.pressure_solve);
+  {
+    auto x = fluid_[fluid_fields_.position];
+    const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
+    for_each_particle(fluid_.size(), [&](std::size_t i) { x.set(i, x[i] + dt * v[i]); });
+  }
+  lap(clock, pass_times_.integration);
+  report.removed = neighbors_.update_fluid(fluid_);
+  lap(clock, pass_times_.neighbor_search);
+  compute_density_and_factor();
+  lap(clock, pass_times_.density);
+  if (scheme_.divergence_solve) {
+    auto predicted = fluid_[solve_fields_.predicted_velocity];
+    const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
+    for_each_particle(fluid_.size(), [&](std::size_t i) { predicted.set(i, v[i]); });
+    report.divergence_solve = solve(solve_fields_.divergence_pressure, Target::divergence,
+                                    scheme_.divergence_warm_start, Vector<D>::Zero(), dt);
+    lap(clock, pass_times_.pressure_solve);
+  }
+  time_ += dt;
+  ++step_count_;
+  gravity_ = setup::gravity_at<D>(scene_, time_);
+  compute_non_pressure_acceleration();
+  clock = std::chrono::steady_clock::now();
+  check_state();
+  count_failures(report);
+  lap(clock, pass_times_.integration);
+  return report;
+}
+
+template <int D>
+void IncompressibleSph<D>::count_failures(const StepReport& report) {
+  const bool density_missed = !report.density_solve->converged;
+  const bool divergence_missed = report.divergence_solve && !report.divergence_solve->converged;
+  if (!density_missed && !divergence_missed) {
+    failed_steps_in_a_row_ = 0;
+    return;
+  }
+  const SolveReport& missed = density_missed ? *report.density_solve : *report.divergence_solve;
+  const std::string which = density_missed ? "density" : "divergence";
+  const double threshold = density_missed ? scene_.solver.max_density_error : scene_.solver.max_divergence_error;
+  std::ostringstream message;
+  message << "step " << step_count_ << ", t = " << time_ << " s: the " << which
+          << " solve left a mean density error of " << percent(missed.error) << " of rho0 after " << missed.iterations
+          << " iterations (threshold " << percent(threshold) << ")";
+  log_warning(message.str());
+  if (++failed_steps_in_a_row_ < scene_.solver.max_failed_solves) return;
+  // The diagnosis names the particle the last sweep found most compressed.
+  const Index id = fluid_[fluid_.id()][std::min(worst_particle_, fluid_.size() - 1)];
+  throw InstabilityError(id, which + " excess", static_cast<double>(worst_excess_), step_count_, time_,
+                         "the pressure solve missed its threshold of " + percent(threshold) + " in " +
+                             std::to_string(failed_steps_in_a_row_) + " consecutive steps; last mean density error " +
+                             percent(missed.error) + " after " + std::to_string(missed.iterations) +
+                             " iterations (raise solver.max_solver_iterations or lower solver.cfl)");
+}
+
+template <int D>
+void IncompressibleSph<D>::check_state() {
+  const Real ratio = static_cast<Real>(scene_.solver.max_density_ratio);
+  StateLimits limits;
+  limits.max_density = ratio * rest_density_;
+  limits.density_band = "above " + setup::format_number(ratio) + " rho0, solver.max_density_ratio";
+  limits.max_speed = static_cast<Real>(scene_.solver.max_mach_number) * reference_sound_speed_;
+  limits.speed_bound = "faster than " + setup::format_number(scene_.solver.max_mach_number) +
+                       " x c0 = " + setup::format_number(limits.max_speed) +
+                       " m/s (c0: the material's sound_speed, else 10 max_speed), solver.max_mach_number";
+  const StateMaxima maxima = check_fluid_state<D>(fluid_, fluid_fields_, limits, step_count_, time_);
+  max_speed_ = maxima.speed;
+  max_acceleration_ = maxima.acceleration;
+}
+
+template <int D>
+double IncompressibleSph<D>::bytes_per_particle() const {
+  return setup::bytes_per_particle<D>(fluid_, walls_, neighbors_);
+}
+
+template class IncompressibleSph<2>;
+template class IncompressibleSph<3>;
+
+}  // namespace tide

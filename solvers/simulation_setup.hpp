@@ -1,0 +1,85 @@
+#pragma once
+
+// What every scheme does to set up a scene: its single fluid material, the neighbour domain,
+// fluid and wall particles with their fields and mass, the gravity ramp, and the pass clock.
+
+#include <algorithm>
+#include <chrono>
+#include <span>
+#include <string>
+
+#include "tide/core/kernels/kernel.hpp"
+#include "tide/core/particle_set.hpp"
+#include "tide/core/scene.hpp"
+#include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/wcsph.hpp"
+
+namespace tide::setup {
+
+/// The scene's one fluid material; std::invalid_argument when it has none, or several fluids
+/// use different ones.
+const scene::Material& single_material(const scene::Scene& scene);
+
+/// c0: the material's sound_speed, else 10 × its max_speed (Monaghan 1994: Mach 0.1).
+Real reference_sound_speed(const scene::Material& material);
+
+template <int D>
+GridDomain<D> grid_domain(const scene::Scene& scene);
+
+/// ρ0 / Σ_k W(|k| Δx): the mass that gives a particle deep in the lattice exactly the rest density.
+template <int D>
+Real particle_mass(const scene::Scene& scene, const AnyKernel<D>& kernel, Real rest_density);
+
+/// Fluid particles sampled from the scene, with the fields every scheme uses (FluidFields'
+/// optional slots left unset) and density ρ0.
+template <int D>
+ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_density, FluidFields<D>& fields);
+
+/// Wall particles sampled from the scene with the fields of WallFields (a surface velocity only
+/// when some obstacle moves), density ρ0 and pressure zero.
+template <int D>
+ParticleSet<D> make_walls(const scene::Scene& scene, Real mass, Real rest_density, WallFields<D>& fields);
+
+/// p_i = ρ0 |g| (top − height of i), top being the highest particle plus half a spacing (its
+/// share of the column): the pressure of the fluid at rest under `gravity` (zero without gravity).
+template <int D>
+void hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity, Real spacing, Real rest_density,
+                          std::span<Real> pressure);
+
+/// Gravity at time t: the scene's, raised smoothly from zero over solver.gravity_ramp_time.
+template <int D>
+Vector<D> gravity_at(const scene::Scene& scene, double t);
+
+/// The part of a body force that a fluid at rest balances with a pressure gradient: its
+/// components along the closed (non-periodic) axes. Along a periodic axis the pressure is
+/// periodic too: a body force there (a periodic channel's driving force) builds no hydrostatic
+/// pressure.
+template <int D>
+Vector<D> hydrostatic_part(const scene::Scene& scene, Vector<D> body_force) {
+  for (int d = 0; d < D; ++d)
+    if (scene.domain.periodic[d]) body_force[d] = 0;
+  return body_force;
+}
+
+/// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
+template <int D>
+double bytes_per_particle(const ParticleSet<D>& fluid, const ParticleSet<D>& walls,
+                          const FluidWallNeighbors<D>& neighbors) {
+  const double fluid_count = static_cast<double>(std::max<std::size_t>(fluid.size(), 1));
+  const double fields =
+      static_cast<double>(fluid.bytes_per_particle() * fluid.size() + walls.bytes_per_particle() * walls.size());
+  return (fields + static_cast<double>(neighbors.bytes())) / fluid_count;
+}
+
+/// Six significant digits, for messages.
+std::string format_number(double value);
+
+/// Adds the seconds since `start` to `total` and restarts the clock.
+inline void lap(std::chrono::steady_clock::time_point& start, double& total) {
+  const auto now = std::chrono::steady_clock::now();
+  total += std::chrono::duration<double>(now - start).count();
+  start = now;
+}
+
+}  // namespace tide::setup

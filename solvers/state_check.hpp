@@ -1,0 +1,36 @@
+#pragma once
+
+// The end-of-step check every scheme runs: the largest speed and acceleration (for the next
+// time step), and the first particle whose state leaves the bounds of a meaningful run.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "tide/core/particle_set.hpp"
+#include "tide/solvers/particle_fields.hpp"
+
+namespace tide {
+
+struct StateLimits {
+  Real min_density = 0;  // 0: no lower bound (summation density is naturally low at a free surface)
+  Real max_density = 0;
+  std::string density_band;  // the band in words, for the message
+  Real max_speed = 0;
+  std::string speed_bound;            // the speed bound in words, for the message
+  std::function<std::string()> note;  // when set, a sentence added to the message (asked only on failure)
+};
+
+struct StateMaxima {
+  Real speed = 0;
+  Real acceleration = 0;
+};
+
+/// Throws InstabilityError for the lowest-index fluid particle with a non-finite position,
+/// velocity, acceleration or density, a density outside the limits or a speed above them;
+/// otherwise returns the maxima. A deterministic reduction, so any thread count gives the same.
+template <int D>
+StateMaxima check_fluid_state(const ParticleSet<D>& fluid, const FluidFields<D>& f, const StateLimits& limits,
+                              std::uint64_t step, double time);
+
+}  // namespace tide
