@@ -4,6 +4,7 @@
 // one gather pass.
 
 #include <cmath>
+#include <span>
 
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
@@ -79,7 +80,31 @@ inline Real artificial_stress_weight(const Kernel& kernel, const ArtificialStres
   return f2 * f2;
 }
 
+// Laminar viscous acceleration on i from one neighbour j in the number-density formulation
+// (Hu & Adams 2006, eq. 11): (1/m_i) η̄_ij (V_i² + V_j²) x_ij·∇W_ij / (r² + 0.01 h²) v_ij, with the
+// inter-particle viscosity η̄_ij = 2 η_i η_j / (η_i + η_j) that keeps the shear stress continuous
+// across an interface.
+template <int D>
+inline Vector<D> multiphase_viscous_term(Real smoothing_length, Real inverse_mass_i, Real eta_i, Real eta_j,
+                                         Real volume_sum, const Vector<D>& v_ij, const Vector<D>& x_ij, Real r2,
+                                         const Vector<D>& grad_w) {
+  const Real eta_sum = eta_i + eta_j;
+  if (!(eta_sum > 0)) return Vector<D>::Zero();
+  const Real eta_ij = 2 * eta_i * eta_j / eta_sum;
+  const Real regularised_r2 = r2 + Real(0.01) * smoothing_length * smoothing_length;
+  return (inverse_mass_i * eta_ij * volume_sum * x_ij.dot(grad_w) / regularised_r2) * v_ij;
+}
+
 }  // namespace detail
+
+/// What the momentum pass needs for several fluids: each particle's phase, each phase's dynamic
+/// viscosity, and the volume of a wall particle (walls fill the lattice: V = Δx^D up to the
+/// kernel's discretisation, the same 1/Σ_k W(|k|Δx) every phase's mass is set from).
+struct MultiphaseTerms {
+  std::span<const Index> phase;
+  std::span<const Real> dynamic_viscosity;  // by phase
+  Real wall_volume = 0;
+};
 
 /// a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3) + viscous terms + g,
 /// summed over fluid and wall neighbours (walls with their extrapolated p, ρ and velocity).
@@ -87,12 +112,17 @@ inline Real artificial_stress_weight(const Kernel& kernel, const ArtificialStres
 /// repulsion between particles in tension that stops them clumping in pairs (Monaghan 2000,
 /// J. Comput. Phys. 159, the artificial pressure added to the equation of motion). Without
 /// `WithPressure`, the non-pressure part only: what an incompressible scheme integrates before
-/// its pressure solve.
-template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, class Kernel>
+/// its pressure solve. With `Multiphase`, the number-density form of Hu & Adams 2006 (eq. 8):
+/// a_i = −(1/m_i) Σ_j (p_i V_i² + p_j V_j²) ∇W_ij with V = m/ρ, which stays free of spurious
+/// interface forces at any density ratio, and the laminar viscosity of
+/// detail::multiphase_viscous_term; for particles of one mass it is the single-phase form.
+template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, bool Multiphase = false,
+          class Kernel>
 void momentum(const Kernel& kernel, const ViscositySettings& settings,
               [[maybe_unused]] const ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
               const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
-              const Vector<D>& gravity) {
+              const Vector<D>& gravity, [[maybe_unused]] const MultiphaseTerms* phases = nullptr) {
+  static_assert(!(Multiphase && ArtificialStress), "the artificial stress is not compiled for several fluids");
   const auto x = std::as_const(fluid)[f.position];
   const auto v = std::as_const(fluid)[f.velocity];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -120,13 +150,32 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
       return term;
     };
     Vector<D> a = gravity;
+    [[maybe_unused]] Real inverse_mass_i = 0, volume_i = 0, eta_i = 0;
+    if constexpr (Multiphase) {
+      inverse_mass_i = 1 / mass[i];
+      volume_i = mass[i] / rho_i;
+      eta_i = phases->dynamic_viscosity[phases->phase[i]];
+    }
     neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
       if (j == i) return;
       const Real rho_j = density[j];
       const Real r = std::sqrt(r2);
       const Vector<D> grad_w = kernel.gradient(x_ij, r);
-      if constexpr (WithPressure) a -= (mass[j] * pressure_term(pressure[j] / (rho_j * rho_j), r)) * grad_w;
-      a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
+      if constexpr (Multiphase) {
+        const Real volume_j = mass[j] / rho_j;
+        const Real vi2 = volume_i * volume_i, vj2 = volume_j * volume_j;
+        if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + pressure[j] * vj2)) * grad_w;
+        if constexpr (Model == scene::ViscosityModel::laminar) {
+          a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i,
+                                                  phases->dynamic_viscosity[phases->phase[j]], vi2 + vj2, v_i - v[j],
+                                                  x_ij, r2, grad_w);
+        } else {
+          a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
+        }
+      } else {
+        if constexpr (WithPressure) a -= (mass[j] * pressure_term(pressure[j] / (rho_j * rho_j), r)) * grad_w;
+        a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
+      }
     });
     if (!WithPressure && !settings.walls_viscous) {
       acceleration.set(i, a);
@@ -136,24 +185,49 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
       const Real rho_b = wall_density[b];
       const Real r = std::sqrt(r2);
       const Vector<D> grad_w = kernel.gradient(x_ib, r);
-      if constexpr (WithPressure) a -= (wall_mass[b] * pressure_term(wall_pressure[b] / (rho_b * rho_b), r)) * grad_w;
-      if (settings.walls_viscous)
-        a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
+      if constexpr (Multiphase) {
+        // The wall takes the viscosity of the fluid particle beside it.
+        const Real vb2 = phases->wall_volume * phases->wall_volume;
+        const Real vi2 = volume_i * volume_i;
+        if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + wall_pressure[b] * vb2)) * grad_w;
+        if (!settings.walls_viscous) return;
+        if constexpr (Model == scene::ViscosityModel::laminar) {
+          a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i, eta_i, vi2 + vb2,
+                                                  v_i - wall_v[b], x_ib, r2, grad_w);
+        } else {
+          a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
+        }
+      } else {
+        if constexpr (WithPressure) a -= (wall_mass[b] * pressure_term(wall_pressure[b] / (rho_b * rho_b), r)) * grad_w;
+        if (settings.walls_viscous)
+          a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
+      }
     });
     acceleration.set(i, a);
   });
 }
 
-/// momentum() compiled for the viscosity model of `settings` and for artificial stress on or off,
-/// picked once per pass outside the particle loop: a scene without artificial stress runs a pass
-/// without it.
+/// momentum() compiled for the viscosity model of `settings`, for artificial stress on or off and
+/// for one fluid or several (`phases` set), picked once per pass outside the particle loop: a
+/// scene without artificial stress or a second fluid runs a pass without them.
 template <int D, bool WithPressure = true, class Kernel>
 void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, const ArtificialStressSettings& stress,
                         ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
-                        const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity) {
+                        const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity,
+                        const MultiphaseTerms* phases = nullptr) {
   const auto run = [&]<scene::ViscosityModel Model, bool Stress>() {
     momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, neighbors, walls, w, gravity);
   };
+  if (phases) {
+    if (settings.model == scene::ViscosityModel::artificial) {
+      momentum<D, scene::ViscosityModel::artificial, WithPressure, false, true>(kernel, settings, stress, fluid, f,
+                                                                                neighbors, walls, w, gravity, phases);
+    } else {
+      momentum<D, scene::ViscosityModel::laminar, WithPressure, false, true>(kernel, settings, stress, fluid, f,
+                                                                             neighbors, walls, w, gravity, phases);
+    }
+    return;
+  }
   const bool with_stress = WithPressure && stress.epsilon > 0;
   if (settings.model == scene::ViscosityModel::artificial) {
     with_stress ? run.template operator()<scene::ViscosityModel::artificial, WithPressure>()
