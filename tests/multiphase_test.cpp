@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "multiphase_scenes.hpp"
@@ -98,6 +99,73 @@ TEST(Multiphase, SquareDropletRelaxesToAreaPreservingCircle) {
   EXPECT_LT(*high - *low, spacing / 2);
   const DropletState state = measure_droplet(simulation, expected);
   EXPECT_NEAR(state.inside_pressure - state.outside_pressure, 1 / expected, 0.05 / expected);
+}
+
+// The pairwise model's pressure is the SPH pressure plus the virial of the pair forces
+// (Irving & Kirkwood 1950): P_i = p_i + (n_i/(2D)) Σ_j r_ij F_ij, F_ij = s_ab cos(3π r_ij/(2R)),
+// n_i = ρ_i/m_i. Returns its jump between the particles deeper than 2h inside the drop of `radius`
+// and those farther than 2h outside it, by a brute-force pair sum over the periodic unit box.
+double pairwise_pressure_jump(const Wcsph<2>& simulation, double radius) {
+  const auto& fluid = simulation.fluid();
+  const auto& f = simulation.fluid_fields();
+  const auto x = fluid[f.position];
+  const auto p = fluid[f.pressure];
+  const auto density = fluid[f.density];
+  const auto mass = fluid[f.mass];
+  const auto phase = fluid[f.phase];
+  const double support = std::visit([](const auto& k) { return double(k.support_radius()); }, simulation.kernel());
+  const double wave = 1.5 * std::numbers::pi / support;
+  const double band = 2 * simulation.smoothing_length();
+  std::array<double, 2> sum{};
+  std::array<int, 2> count{};
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    const double r = (x[i] - Vector<2>(0.5, 0.5)).norm();
+    if (r > radius - band && r < radius + band) continue;
+    double virial = 0;
+    for (std::size_t j = 0; j < fluid.size(); ++j) {
+      Vector<2> d = x[i] - x[j];
+      for (int k = 0; k < 2; ++k) d[k] = d[k] > 0.5 ? d[k] - 1 : (d[k] < -0.5 ? d[k] + 1 : d[k]);
+      if (j == i || std::abs(d[0]) >= support || std::abs(d[1]) >= support) continue;
+      const double r_ij = d.norm();
+      if (r_ij >= support) continue;
+      virial += r_ij * simulation.pair_strength(phase[i], phase[j]) * std::cos(wave * r_ij);
+    }
+    const int side = r < radius ? 0 : 1;
+    sum[side] += p[i] + density[i] / mass[i] / 4 * virial;
+    ++count[side];
+  }
+  return sum[0] / count[0] - sum[1] / count[1];
+}
+
+// Laplace law (refdata/analytic.md, section 5) for the pairwise model of Tartakovsky & Meakin 2005,
+// the drop of the csf test (R = 0.2, Δx = 1/40, equal densities, σ = 1). Two choices keep it whole:
+// - the support R = 4Δx (h = 2Δx): with the kernel's 3Δx the nearest neighbours sit at the zero of
+//   the force, R/3 = Δx, nothing resists the cohesion between them and the drop clumped and failed
+//   the density check within 35 steps;
+// - a background pressure 150 above the bulk virial pressure of the pair forces (−67 here): with
+//   60 the bulk is in tension (total −7) and the lattice disorders.
+// The jump of the total pressure oscillates with the drop's capillary mode (4.4 to 5.0 between 1 s
+// and 2 s), so it is averaged over that second, every 50 steps. Measured (double): 4.78 (−4.4%)
+// against σ/R = 5; within the 5% of the csf test. (With background pressure 300 it is 4.66, −6.9%;
+// the SPH part alone is 6.3, +25%, since the denser drop has a more negative virial.)
+TEST(Multiphase, PairwiseLaplaceLaw) {
+  const double radius = 0.2;
+  scene::Scene scene = test::droplet_scene(radius);
+  scene.smoothing_ratio = 2;
+  scene.solver.background_pressure = 150;
+  scene.solver.surface_tension = {scene::SurfaceTensionModel::pairwise, 1.0, 90, 0};
+  Wcsph<2> simulation(scene);
+  double jump = 0;
+  int samples = 0;
+  while (simulation.time() < 2.0) {
+    simulation.step();
+    if (simulation.time() > 1.0 && simulation.step_count() % 50 == 0) {
+      jump += pairwise_pressure_jump(simulation, radius);
+      ++samples;
+    }
+  }
+  EXPECT_NEAR(jump / samples, 1 / radius, 0.05 / radius);
+  EXPECT_GT(samples, 20);
 }
 
 // The number-density formulation keeps every particle's mass: the mass of each phase is the same
