@@ -188,6 +188,12 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
 }
 
 template <int D>
+Real Wcsph<D>::pair_strength(Index a, Index b) const {
+  if (!tension_ || tension_->pair_strength.empty()) return 0;
+  return tension_->pair_strength[a * tension_->phase_count + b];
+}
+
+template <int D>
 void Wcsph<D>::add_surface_tension() {
   const std::span<const Index> phase = phases_ ? std::as_const(fluid_)[fluid_fields_.phase] : std::span<const Index>{};
   const passes::SurfaceTensionSettings& s = *tension_;

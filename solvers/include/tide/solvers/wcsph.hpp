@@ -61,6 +61,9 @@ class Wcsph final : public Simulation<D> {
   const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
   /// The phases of a multiphase scene; null for a single fluid.
   const Phases* phases() const { return phases_ ? &*phases_ : nullptr; }
+  /// The pairwise model's force strength s_ab between phases a and b (Tartakovsky & Meakin 2005);
+  /// 0 without it.
+  Real pair_strength(Index a, Index b) const;
   double bytes_per_particle() const override;
 
  private:
