@@ -56,6 +56,9 @@ DropletState measure_droplet(const Wcsph<2>& simulation, double radius) {
 // R = 0.2 and 3.301 (−1.0%) at R = 0.3; max spurious speed 0.035 and 0.023 m/s. The issue's 5%
 // bound holds; the spurious speeds are asserted below 0.05 m/s, 2.5e-3 of the capillary speed
 // σ/μ = 20 m/s (Adami, Hu & Adams 2010 report spurious speeds of that order at this resolution).
+// Not yet an equilibrium value: the jump keeps drifting after 1 s (−11% to −16% between 2.5 and
+// 4 s at R = 0.2) and is not converged in Δx (docs/multiphase.md, the csf study), so this guards
+// the set-up at t = 1 s; the time-converged Laplace law for csf is open (issue 7).
 TEST(Multiphase, LaplaceLawForTwoRadii) {
   for (const double radius : {0.2, 0.3}) {
     Wcsph<2> simulation(test::droplet_scene(radius));
