@@ -3,7 +3,8 @@
 //
 // Names carry everything a number depends on, e.g.
 //   BM_NeighborBuild/3D/N:1000000/radix/hash/threads:2/double
-//   BM_KernelSumSweep/3D/N:1000000/threads:2/double
+//   BM_KernelSumSweep/3D/N:1000000/list/threads:2/double   (or cell_walk)
+//   BM_NeighborList/3D/N:1000000/threads:2/double      (building the per-step neighbour list)
 //   BM_CellRanges/3D/N:1000000/hash/threads:2/double   (one part of the build, 2 threads only)
 // The thread count is imposed with tide::ThreadLimit inside the benchmark (1 and 2 threads are
 // registered), the precision is tide::Real (TIDE_REAL_NAME). All times are wall-clock
@@ -59,6 +60,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tide/core/config.hpp"
@@ -67,6 +69,7 @@
 #include "tide/core/particle_set.hpp"
 #include "tide/core/types.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/neighbor/neighbor_list.hpp"
 
 namespace {
 
@@ -234,10 +237,33 @@ void cell_ranges(benchmark::State& state, std::size_t n, tide::CellLookup lookup
   state.counters["threads"] = Counter(double(tide::thread_count()));
 }
 
-// ρ_i = Σ_j m W(|x_i − x_j|) over all neighbours j (i included): the shape of density
-// summation and of every other gather pass, after one update.
+// The per-step neighbour list (NeighborList over the grid's own ranges) built alone, on the grid
+// of a steady-state update: the extra cost a step pays once so that its passes skip the filter.
 template <int D>
-void kernel_sum_sweep(benchmark::State& state, std::size_t n, int threads) {
+void neighbor_list_build(benchmark::State& state, std::size_t n, int threads) {
+  tide::ThreadLimit limit(threads);
+  const Cloud<D>& c = cloud<D>(n);
+  tide::ParticleSet<D> particles = make_particles(c);
+  tide::NeighborGrid<D> grid(c.domain, 2 * dx);
+  if (grid.update(particles) != 0) state.SkipWithError("particles left the domain");
+  perturb(particles, 0);
+  grid.update(particles);
+  const tide::ConstVectorView<D> x = std::as_const(particles)[particles.position()];
+  tide::NeighborList<D> list;
+  list.build(grid, x, grid.own_neighbors(), x);
+  for (auto _ : state) {
+    list.build(grid, x, grid.own_neighbors(), x);
+    benchmark::ClobberMemory();
+  }
+  set_common_counters(state, particles.size(), count_pairs(grid, particles), grid, particles, true);
+  state.counters["list_B/particle"] = benchmark::Counter(double(list.bytes()) / double(particles.size()));
+}
+
+// ρ_i = Σ_j m W(|x_i − x_j|) over all neighbours j (i included): the shape of density
+// summation and of every other gather pass, after one update; walking the cells' ranges and
+// filtering (`listed` false) or walking a NeighborList built beforehand, untimed (true).
+template <int D>
+void kernel_sum_sweep(benchmark::State& state, std::size_t n, bool listed, int threads) {
   tide::ThreadLimit limit(threads);
   const Cloud<D>& c = cloud<D>(n);
   tide::ParticleSet<D> particles = make_particles(c);
@@ -248,11 +274,17 @@ void kernel_sum_sweep(benchmark::State& state, std::size_t n, int threads) {
   const tide::ConstVectorView<D> x = particles[particles.position()];
   const auto density = particles[density_field];
   const Real mass = rest_density * std::pow(dx, Real(D));
+  tide::NeighborList<D> list;
+  list.build(grid, x, grid.own_neighbors(), x);
   auto sweep = [&] {
     tide::for_each_particle(particles.size(), [&](std::size_t i) {
       Real sum = 0;
-      grid.for_each_neighbor(i, x,
-                             [&](tide::Index, const tide::Vector<D>&, Real r2) { sum += kernel.value(std::sqrt(r2)); });
+      const auto add = [&](tide::Index, const tide::Vector<D>&, Real r2) { sum += kernel.value(std::sqrt(r2)); };
+      if (listed) {
+        list.for_each(i, x, x, add);
+      } else {
+        grid.for_each_neighbor(i, x, add);
+      }
       density[i] = mass * sum;
     });
   };
@@ -312,11 +344,19 @@ void register_dimension() {
   }
   for (std::size_t n : {std::size_t(10'000), std::size_t(100'000), std::size_t(1'000'000)}) {
     for (int threads : {1, 2}) {
-      const std::string name = "BM_KernelSumSweep/" + dim + "/" + size_name(n) + suffix(threads);
-      auto* b = benchmark::RegisterBenchmark(name.c_str(),
-                                             [=](benchmark::State& state) { kernel_sum_sweep<D>(state, n, threads); });
+      for (bool listed : {false, true}) {
+        const std::string name =
+            "BM_KernelSumSweep/" + dim + "/" + size_name(n) + (listed ? "/list" : "/cell_walk") + suffix(threads);
+        auto* b = benchmark::RegisterBenchmark(
+            name.c_str(), [=](benchmark::State& state) { kernel_sum_sweep<D>(state, n, listed, threads); });
+        b->UseRealTime()->Unit(benchmark::kMillisecond);
+        if (n >= 1'000'000) b->Iterations(5);
+      }
+      const std::string name = "BM_NeighborList/" + dim + "/" + size_name(n) + suffix(threads);
+      auto* b = benchmark::RegisterBenchmark(
+          name.c_str(), [=](benchmark::State& state) { neighbor_list_build<D>(state, n, threads); });
       b->UseRealTime()->Unit(benchmark::kMillisecond);
-      if (n >= 1'000'000) b->Iterations(5);
+      if (n >= 1'000'000) b->Iterations(10);
     }
   }
 }

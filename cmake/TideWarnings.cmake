@@ -8,3 +8,16 @@ if(TIDE_SANITIZE)
     -fsanitize=${TIDE_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
   target_link_options(tide_warnings INTERFACE -fsanitize=${TIDE_SANITIZE})
 endif()
+
+# RelWithDebInfo is the profiling build: Release's -O3 with debug information and frame pointers,
+# so that `perf record -g` unwinds through the passes cheaply (docs/performance.md, "Profiling").
+target_compile_options(tide_warnings INTERFACE
+  $<$<AND:$<CONFIG:RelWithDebInfo>,$<CXX_COMPILER_ID:GNU,Clang>>:-O3 -fno-omit-frame-pointer -mno-omit-leaf-frame-pointer>)
+
+# Instruction set of the hot loops: empty keeps the compiler's default (x86-64: SSE2); e.g.
+# "native" or "x86-64-v3" (AVX2) lets the vectorised loops use wider registers. Results stay
+# bitwise identical for any thread count within one build; they may differ between builds.
+set(TIDE_ARCH "" CACHE STRING "Passed as -march= to every TideSPH target (empty: the compiler's default)")
+if(TIDE_ARCH)
+  target_compile_options(tide_warnings INTERFACE $<$<CXX_COMPILER_ID:GNU,Clang>:-march=${TIDE_ARCH}>)
+endif()

@@ -97,7 +97,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   time_ = scene.time.start;
 
   neighbors_.set_walls(walls_);
-  neighbors_.update_fluid(fluid_);
+  neighbors_.update_fluid(fluid_, walls_);
   compute_density_and_factor();
   compute_non_pressure_acceleration();
   check_state();
@@ -213,7 +213,7 @@ StepReport IncompressibleSph<D>::step() {
     for_each_particle(fluid_.size(), [&](std::size_t i) { x.set(i, x[i] + dt * v[i]); });
   }
   lap(clock, pass_times_.integration);
-  report.removed = neighbors_.update_fluid(fluid_);
+  report.removed = neighbors_.update_fluid(fluid_, walls_);
   lap(clock, pass_times_.neighbor_search);
   compute_density_and_factor();
   lap(clock, pass_times_.density);

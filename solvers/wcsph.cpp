@@ -81,7 +81,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
 
   build_pipeline();
   neighbors_.set_walls(walls_);
-  neighbors_.update_fluid(fluid_);
+  neighbors_.update_fluid(fluid_, walls_);
   compute_interactions(setup::gravity_at<D>(scene_, time_));
   check_state();
 }
@@ -250,7 +250,7 @@ StepReport Wcsph<D>::step() {
     });
   }
   lap(clock, pass_times_.integration);
-  report.removed = neighbors_.update_fluid(fluid_);
+  report.removed = neighbors_.update_fluid(fluid_, walls_);
   lap(clock, pass_times_.neighbor_search);
   const Vector<D> gravity = setup::gravity_at<D>(scene_, time_ + dt);
   if (scene_.solver.density == scene::DensityMethod::continuity) {

@@ -7,10 +7,12 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tide/core/log.hpp"
 #include "tide/neighbor/morton.hpp"
+#include "tide/neighbor/neighbor_list.hpp"
 
 namespace tide {
 namespace {
@@ -211,6 +213,23 @@ class NeighborGridAgainstBruteForce : public testing::TestWithParam<GridCase> {
       pairs += found.size();
     }
     EXPECT_GT(pairs, set.size());  // not only self-pairs: the test exercises real neighbours
+
+    // The neighbour list gives the cell walk's neighbours, in its order, with the same x_ij and r².
+    NeighborList<D> list;
+    list.build(grid, x, grid.own_neighbors(), x);
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      std::vector<std::pair<Index, Vector<D>>> walked;
+      grid.for_each_neighbor(i, x, [&](Index j, const Vector<D>& xij, Real) { walked.emplace_back(j, xij); });
+      std::size_t k = 0;
+      list.for_each(i, x, x, [&](Index j, const Vector<D>& xij, Real r2) {
+        ASSERT_LT(k, walked.size());
+        EXPECT_EQ(j, walked[k].first);
+        EXPECT_EQ(xij, walked[k].second);
+        EXPECT_EQ(r2, squared_norm<D>(walked[k].second));
+        ++k;
+      });
+      ASSERT_EQ(k, walked.size()) << "particle id " << ids[i];
+    }
 
     // Cross-set queries, including points up to one support outside a closed domain.
     std::mt19937_64 random(7);

@@ -43,6 +43,8 @@ struct CellRange {
 
 template <int D>
 class NeighborGrid;
+template <int D>
+class NeighborList;
 
 /// For each occupied cell of a query grid, the merged ranges of source particles in its 3^D
 /// neighbouring cells of a source grid with the same domain and support. A grid keeps one such
@@ -93,6 +95,7 @@ class CrossNeighbors {
   }
 
  private:
+  friend class NeighborList<D>;
   std::array<Vector<D>, D == 2 ? 9 : 27> shifts_{};
   Real support_squared_ = 0;
   std::vector<std::uint32_t> range_offset_;  // query cell c: ranges [offset[c], offset[c+1])
@@ -143,11 +146,15 @@ class NeighborGrid {
   /// The lookup the last update used (resolves `automatic`).
   CellLookup active_cell_lookup() const { return active_lookup_; }
 
+  /// The per-cell neighbour ranges of the grid over itself (what for_each_neighbor walks).
+  const CrossNeighbors<D>& own_neighbors() const { return own_neighbors_; }
+
   /// Bytes the grid keeps (tables and sort workspace), per particle of the last update.
   std::size_t bytes_per_particle() const;
 
  private:
   friend class CrossNeighbors<D>;
+  friend class NeighborList<D>;
   static constexpr std::uint32_t no_cell = std::numeric_limits<std::uint32_t>::max();
   static constexpr int stencil_size = D == 2 ? 9 : 27;
 

@@ -1,11 +1,16 @@
 #pragma once
 
+#include <utility>
+
 #include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/neighbor/neighbor_list.hpp"
 
 namespace tide {
 
 /// The neighbour tables a fluid-with-walls pass needs: fluid–fluid from the fluid grid, and the
-/// two cross tables fluid → walls and walls → fluid (both grids share domain and support).
+/// two cross tables fluid → walls and walls → fluid (both grids share domain and support). Each
+/// is walked through a NeighborList built once per fluid update, so the distance filter runs
+/// once per step, not once per pass and solver sweep.
 template <int D>
 class FluidWallNeighbors {
  public:
@@ -15,27 +20,34 @@ class FluidWallNeighbors {
   /// Sorts the walls once; they do not move.
   void set_walls(ParticleSet<D>& walls) { wall_grid_.update(walls); }
 
-  /// Re-sorts the fluid and relinks it with the walls; returns the particles removed.
-  std::size_t update_fluid(ParticleSet<D>& fluid) {
+  /// Re-sorts the fluid, relinks it with the walls (`walls` as last passed to set_walls) and
+  /// lists the neighbours; returns the particles removed. The passes' positions must stay those
+  /// of this call until the next one.
+  std::size_t update_fluid(ParticleSet<D>& fluid, const ParticleSet<D>& walls) {
     const std::size_t removed = fluid_grid_.update(fluid);
     fluid_to_walls_.build(fluid_grid_, wall_grid_);
     walls_to_fluid_.build(wall_grid_, fluid_grid_);
+    const auto fluid_x = std::as_const(fluid)[fluid.position()];
+    const auto wall_x = walls[walls.position()];
+    fluid_list_.build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x);
+    fluid_to_walls_list_.build(fluid_grid_, fluid_x, fluid_to_walls_, wall_x);
+    walls_to_fluid_list_.build(wall_grid_, wall_x, walls_to_fluid_, fluid_x);
     return removed;
   }
 
   template <class F>
   void for_each_fluid_neighbor(std::size_t i, const ConstVectorView<D>& fluid_x, F&& f) const {
-    fluid_grid_.for_each_neighbor(i, fluid_x, f);
+    fluid_list_.for_each(i, fluid_x, fluid_x, f);
   }
   template <class F>
   void for_each_wall_neighbor(std::size_t i, const ConstVectorView<D>& fluid_x, const ConstVectorView<D>& wall_x,
                               F&& f) const {
-    fluid_to_walls_.for_each_in_cell(fluid_grid_.particle_cell(i), fluid_x[i], wall_x, f);
+    fluid_to_walls_list_.for_each(i, fluid_x, wall_x, f);
   }
   template <class F>
   void for_each_fluid_neighbor_of_wall(std::size_t b, const ConstVectorView<D>& wall_x,
                                        const ConstVectorView<D>& fluid_x, F&& f) const {
-    walls_to_fluid_.for_each_in_cell(wall_grid_.particle_cell(b), wall_x[b], fluid_x, f);
+    walls_to_fluid_list_.for_each(b, wall_x, fluid_x, f);
   }
 
   const NeighborGrid<D>& fluid_grid() const { return fluid_grid_; }
@@ -47,12 +59,15 @@ class FluidWallNeighbors {
   NeighborGrid<D> wall_grid_;
   CrossNeighbors<D> fluid_to_walls_;
   CrossNeighbors<D> walls_to_fluid_;
+  NeighborList<D> fluid_list_;
+  NeighborList<D> fluid_to_walls_list_;
+  NeighborList<D> walls_to_fluid_list_;
 };
 
 template <int D>
 std::size_t FluidWallNeighbors<D>::bytes() const {
-  return fluid_to_walls_.bytes() + walls_to_fluid_.bytes() +
-         fluid_grid_.bytes_per_particle() * fluid_grid_.particle_count() +
+  return fluid_to_walls_.bytes() + walls_to_fluid_.bytes() + fluid_list_.bytes() + fluid_to_walls_list_.bytes() +
+         walls_to_fluid_list_.bytes() + fluid_grid_.bytes_per_particle() * fluid_grid_.particle_count() +
          wall_grid_.bytes_per_particle() * wall_grid_.particle_count();
 }
 

@@ -1,0 +1,346 @@
+// Step benchmarks (issues 3 and 8): one full time step of each scheme (WCSPH, DFSPH, IISPH,
+// through tide::make_simulation) on the dam-break set-up at 10^4 to 10^6 fluid particles (10^7
+// with TIDE_BENCH_HUGE=1) in 2D and 3D, with 1 and 2 threads; the 3D reference scene of issue 8;
+// the cost of each optional feature on and off; and whole 2D dam-break runs to T = 3.
+//
+// Names carry everything a number depends on:
+//   BM_Step/<scheme>/<D>D/N:<n>/threads:<t>/<real>       N nominal fluid particles (exact: `fluid`)
+//   BM_Reference3D/<scheme>/threads:<t>/<real>           1 x 1 x 1 m block (39^3 = 59 319 particles,
+//                                                        spacing 0.025 m) in a 4 x 3 x 1.5 m tank,
+//                                                        cubic spline, support 2 x spacing
+//   BM_Feature/<feature>:<on|off>/3D/N:100000/threads:2/<real>
+//   BM_DamBreak2D/<scheme>/a_dx:<k>/threads:2/<real>     the validation case dam_break_2d (Wendland
+//                                                        C2, h = 1.7 dx) run to T = t sqrt(2g/a) = 3
+// The thread count is imposed with tide::ThreadLimit, the precision is tide::Real (TIDE_REAL_NAME).
+// All times are wall-clock (UseRealTime).
+//
+// The scenes (dam_break()): as scenes/dam_break_2d.json and scenes/dam_break_3d.json with only the
+// spacing changed. 2D: Martin & Moyce, a column a x 2a (a = 0.05715 m) in a tank 5a x 3a, Wendland
+// C2 with h = 1.3 dx, 3 wall layers. 3D: a cube of water in the corner of a 4 x 1.5 x 3 m tank (z
+// up), cubic spline with h = dx (support 2 dx, the SPlisHSPlasH reference set-up), 2 wall layers.
+// Both: free-slip walls, open top, Tait EOS, density summation, artificial viscosity alpha = 0.02,
+// c0 = 10 x the expected maximum speed; incompressible schemes stop their density solve at a mean
+// density error of 0.05% of rho0 (solver.max_density_error). The domain is the one io/ derives.
+//
+// Warm-up: the simulation is constructed and runs `warmup_steps` steps untimed; then every
+// iteration is one step() (the column keeps collapsing, as in a run).
+//
+// Counters (per iteration = per step):
+//   particle-steps/s  fluid particles / wall seconds per step (walls not counted)
+//   ns/pair           wall time per step / (fluid-fluid + fluid-wall neighbour pairs, i itself
+//                     included), counted once after the timed loop: the cost per particle-neighbour
+//                     interaction of the whole step
+//   B/particle        Simulation::bytes_per_particle(): fluid and wall fields plus every neighbour
+//                     structure (grids, range tables, neighbour lists), per fluid particle
+//   f_nbr, f_density, f_wall, f_momentum, f_solve, f_integr, f_shift
+//                     share of the step in each part, from Simulation::pass_times(): neighbour
+//                     search (sort, reorder, cell tables, neighbour lists), density (+ EOS; for the
+//                     incompressible schemes + the pressure factor), wall state, momentum
+//                     (incompressible: the non-pressure forces), the pressure solves, integration
+//                     (kicks, drift, state check), particle shifting; f_other = 1 - their sum
+//   density_iter, divergence_iter   mean iterations per step of the incompressible solves
+//   sim_s/step        mean simulated seconds per step; wall_per_sim_s = wall seconds per simulated
+//                     second (what a fixed-duration run costs)
+//   neighbors         fluid and wall neighbours per fluid particle, itself included
+//   fluid, walls/fluid, threads, cpu_util (process CPU time / (wall time x threads): near 1 when
+//                     every thread had a core; a row well below is disturbed, re-run it)
+//
+// Reproduce: scripts/bench.sh (all suites, then docs/performance.md), or
+//   cmake --build build --target step_bench && build/bench/step_bench --benchmark_filter=BM_Reference3D
+
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tide/core/config.hpp"
+#include "tide/core/parallel.hpp"
+#include "tide/core/scene.hpp"
+#include "tide/solvers/simulation.hpp"
+#include "tide/validation/case.hpp"
+
+namespace {
+
+using tide::Real;
+namespace scene = tide::scene;
+
+constexpr int warmup_steps = 20;
+
+// The shipped dam-break scene of dimension D with `k` particles across the column width (2D:
+// k x 2k particles; 3D: a cube of k^3 particles, side k x `spacing`).
+scene::Scene dam_break(int dimension, double k, double spacing_3d, scene::Scheme scheme) {
+  scene::Scene s;
+  s.source = "step_bench dam break " + std::to_string(dimension) + "D";
+  s.dimension = dimension;
+  s.walls.slip = scene::WallSlip::free_slip;
+  s.solver.alpha = 0.02;
+  s.solver.scheme = scheme;
+  s.solver.max_density_error = 0.0005;
+  scene::Vec tank{};
+  if (dimension == 2) {
+    const double a = 0.05715;
+    s.particle_spacing = a / k;
+    s.kernel = tide::KernelType::wendland_c2;
+    s.smoothing_ratio = 1.3;
+    s.walls.layers = 3;
+    s.materials.push_back({"water", 1000, 1e-6, std::nullopt, 1.5});
+    s.fluid.push_back({0, scene::Box{{0, 0, 0}, {a, 2 * a, 0}}});
+    tank = {5 * a, 3 * a, 0};
+    s.gravity = {0, -9.81, 0};
+  } else {
+    s.particle_spacing = spacing_3d;
+    s.kernel = tide::KernelType::cubic_spline;
+    s.smoothing_ratio = 1.0;
+    s.walls.layers = 2;
+    s.materials.push_back({"water", 1000, 1e-6, std::nullopt, 4.5});
+    const double side = k * spacing_3d;
+    s.fluid.push_back({0, scene::Box{{0, 0, 0}, {side, side, side}}});
+    tank = {4, 1.5, 3};
+    s.gravity = {0, 0, -9.81};
+  }
+  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, tank}, true};
+  const double wall = s.walls.layers * s.particle_spacing;
+  for (int d = 0; d < dimension; ++d) {
+    s.domain.box.min[d] = -wall;
+    s.domain.box.max[d] = tank[d] + wall;
+  }
+  s.domain.box.max[dimension - 1] += tank[dimension - 1];
+  return s;
+}
+
+// About n fluid particles: 2D k x 2k with 2k^2 = n, 3D a 1 m cube of k^3.
+scene::Scene sized_dam_break(int dimension, std::size_t n, scene::Scheme scheme) {
+  if (dimension == 2) return dam_break(2, std::round(std::sqrt(double(n) / 2)), 0, scheme);
+  const double k = std::round(std::cbrt(double(n)));
+  return dam_break(3, k, 1.0 / k, scheme);
+}
+
+// Issue 8's reference: SPlisHSPlasH's 3D dam break, 39^3 particles at 0.025 m.
+scene::Scene reference_3d(scene::Scheme scheme) { return dam_break(3, 39, 0.025, scheme); }
+
+double process_cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+// Fluid-fluid plus fluid-wall pairs (i itself included) at the current positions.
+template <int D>
+std::size_t count_pairs(const tide::Simulation<D>& simulation) {
+  const tide::ConstVectorView<D> x = simulation.fluid()[simulation.fluid_fields().position];
+  const tide::ConstVectorView<D> wall_x = simulation.walls()[simulation.wall_fields().position];
+  return tide::reduce(
+      simulation.fluid().size(), std::size_t(0),
+      [&](std::size_t i) {
+        std::size_t count = 0;
+        const auto add = [&](tide::Index, const tide::Vector<D>&, Real) { ++count; };
+        simulation.fluid_grid().for_each_neighbor(i, x, add);
+        simulation.wall_grid().for_each_neighbor_of(x[i], wall_x, add);
+        return count;
+      },
+      [](std::size_t a, std::size_t b) { return a + b; });
+}
+
+template <int D>
+void time_steps(benchmark::State& state, const scene::Scene& s, int threads) {
+  tide::ThreadLimit limit(threads);
+  try {
+    const std::unique_ptr<tide::Simulation<D>> owner = tide::make_simulation<D>(s);
+    tide::Simulation<D>& simulation = *owner;
+    for (int step = 0; step < warmup_steps; ++step) simulation.step();
+
+    const tide::PassTimes before = simulation.pass_times();
+    const double time_before = simulation.time();
+    std::size_t density_iterations = 0;
+    std::size_t divergence_iterations = 0;
+    const double cpu_start = process_cpu_seconds();
+    const auto start = std::chrono::steady_clock::now();
+    for (auto _ : state) {
+      const tide::StepReport report = simulation.step();
+      if (report.density_solve) density_iterations += std::size_t(report.density_solve->iterations);
+      if (report.divergence_solve) divergence_iterations += std::size_t(report.divergence_solve->iterations);
+      benchmark::ClobberMemory();
+    }
+    const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu_seconds = process_cpu_seconds() - cpu_start;
+    const tide::PassTimes after = simulation.pass_times();
+    if (simulation.removed_total() != 0) {
+      state.SkipWithError("particles left the domain");
+      return;
+    }
+    const double steps = double(state.iterations());
+    const double fluid = double(simulation.fluid().size());
+    const double pairs = double(count_pairs(simulation));
+    using benchmark::Counter;
+    state.counters["particle-steps/s"] = Counter(fluid, Counter::kIsIterationInvariantRate);
+    state.counters["ns/pair"] = Counter(1e9 * wall_seconds / (steps * pairs));
+    state.counters["B/particle"] = Counter(simulation.bytes_per_particle());
+    const auto share = [&](const char* name, double tide::PassTimes::*part) {
+      const double f = (after.*part - before.*part) / wall_seconds;
+      state.counters[name] = Counter(f);
+      return f;
+    };
+    const double accounted =
+        share("f_nbr", &tide::PassTimes::neighbor_search) + share("f_density", &tide::PassTimes::density) +
+        share("f_wall", &tide::PassTimes::wall_state) + share("f_momentum", &tide::PassTimes::momentum) +
+        share("f_solve", &tide::PassTimes::pressure_solve) + share("f_integr", &tide::PassTimes::integration) +
+        share("f_shift", &tide::PassTimes::shifting);
+    state.counters["f_other"] = Counter(1 - accounted);
+    state.counters["density_iter"] = Counter(double(density_iterations) / steps);
+    state.counters["divergence_iter"] = Counter(double(divergence_iterations) / steps);
+    const double simulated = simulation.time() - time_before;
+    state.counters["sim_s/step"] = Counter(simulated / steps);
+    state.counters["wall_per_sim_s"] = Counter(wall_seconds / simulated);
+    state.counters["neighbors"] = Counter(pairs / fluid);
+    state.counters["fluid"] = Counter(fluid);
+    state.counters["walls/fluid"] = Counter(double(simulation.walls().size()) / fluid);
+    state.counters["threads"] = Counter(double(tide::thread_count()));
+    state.counters["cpu_util"] = Counter(cpu_seconds / (wall_seconds * threads));
+  } catch (const std::exception& error) {
+    state.SkipWithError(error.what());
+  }
+}
+
+// Fixed per size: a few seconds of timed steps per row on 2 cores.
+benchmark::IterationCount iterations(std::size_t n, scene::Scheme scheme) {
+  const benchmark::IterationCount explicit_steps = n >= 10'000'000 ? 2 : n >= 1'000'000 ? 5 : n >= 100'000 ? 20 : 200;
+  return scheme == scene::Scheme::wcsph ? explicit_steps : std::max<benchmark::IterationCount>(explicit_steps / 2, 2);
+}
+
+std::string suffix(int threads) { return "/threads:" + std::to_string(threads) + "/" + TIDE_REAL_NAME; }
+
+void add(const std::string& name, benchmark::IterationCount steps, std::function<void(benchmark::State&)> run) {
+  benchmark::RegisterBenchmark(name.c_str(), std::move(run))
+      ->UseRealTime()
+      ->Unit(benchmark::kMillisecond)
+      ->Iterations(steps);
+}
+
+constexpr scene::Scheme schemes[] = {scene::Scheme::wcsph, scene::Scheme::dfsph, scene::Scheme::iisph};
+
+template <int D>
+void register_steps(bool huge) {
+  std::vector<std::size_t> sizes{10'000, 100'000, 1'000'000};
+  if (huge && D == 3) sizes.push_back(10'000'000);
+  for (scene::Scheme scheme : schemes) {
+    for (std::size_t n : sizes) {
+      for (int threads : {1, 2}) {
+        const std::string name = "BM_Step/" + std::string(tide::scheme_name(scheme)) + "/" + std::to_string(D) +
+                                 "D/N:" + std::to_string(n) + suffix(threads);
+        add(name, iterations(n, scheme),
+            [=](benchmark::State& state) { time_steps<D>(state, sized_dam_break(D, n, scheme), threads); });
+      }
+    }
+  }
+}
+
+void register_reference() {
+  for (scene::Scheme scheme : schemes) {
+    for (int threads : {1, 2}) {
+      const std::string name = "BM_Reference3D/" + std::string(tide::scheme_name(scheme)) + suffix(threads);
+      add(name, scheme == scene::Scheme::wcsph ? 100 : 40,
+          [=](benchmark::State& state) { time_steps<3>(state, reference_3d(scheme), threads); });
+    }
+  }
+}
+
+// Each optional feature of the WCSPH step, on and off, on the 3D dam break at 10^5 particles.
+// Surface tension and multiple phases (being built on another branch) join this list as two
+// more entries.
+struct Feature {
+  const char* name;
+  std::function<void(scene::Scene&)> on;
+  std::function<void(scene::Scene&)> off;
+};
+
+void register_features() {
+  const std::vector<Feature> features{
+      {"laminar_viscosity", [](scene::Scene& s) { s.solver.viscosity = scene::ViscosityModel::laminar; },
+       [](scene::Scene& s) { s.solver.viscosity = scene::ViscosityModel::artificial; }},
+      {"no_slip_walls", [](scene::Scene& s) { s.walls.slip = scene::WallSlip::no_slip; },
+       [](scene::Scene& s) { s.walls.slip = scene::WallSlip::free_slip; }},
+      {"artificial_stress", [](scene::Scene& s) { s.solver.artificial_stress = 0.2; },
+       [](scene::Scene& s) { s.solver.artificial_stress = 0; }},
+      {"continuity_delta_sph",
+       [](scene::Scene& s) {
+         s.solver.density = scene::DensityMethod::continuity;
+         s.solver.delta_sph = 0.1;
+       },
+       [](scene::Scene& s) {
+         s.solver.density = scene::DensityMethod::continuity;
+         s.solver.delta_sph = 0;
+       }},
+      {"continuity_density", [](scene::Scene& s) { s.solver.density = scene::DensityMethod::continuity; },
+       [](scene::Scene& s) { s.solver.density = scene::DensityMethod::summation; }},
+      {"shifting", [](scene::Scene& s) { s.solver.shifting = scene::Shifting::fickian; },
+       [](scene::Scene& s) { s.solver.shifting = scene::Shifting::none; }},
+  };
+  constexpr std::size_t n = 100'000;
+  for (const Feature& feature : features) {
+    for (bool on : {false, true}) {
+      const std::string name =
+          std::string("BM_Feature/") + feature.name + (on ? ":on" : ":off") + "/3D/N:" + std::to_string(n) + suffix(2);
+      const auto configure = on ? feature.on : feature.off;
+      add(name, iterations(n, scene::Scheme::wcsph), [=](benchmark::State& state) {
+        scene::Scene s = sized_dam_break(3, n, scene::Scheme::wcsph);
+        configure(s);
+        time_steps<3>(state, s, 2);
+      });
+    }
+  }
+}
+
+// The validation case dam_break_2d (Martin & Moyce) run to T = 3: wall seconds of the stepping
+// and the front error after the start-time offset.
+void register_dam_break_runs() {
+  for (const char* scheme : {"wcsph", "dfsph", "iisph"}) {
+    for (int resolution : {40, 80}) {
+      const std::string name =
+          std::string("BM_DamBreak2D/") + scheme + "/a_dx:" + std::to_string(resolution) + suffix(2);
+      benchmark::RegisterBenchmark(name.c_str(),
+                                   [=](benchmark::State& state) {
+                                     tide::ThreadLimit limit(2);
+                                     const tide::validation::Case* c = tide::validation::find_case("dam_break_2d");
+                                     tide::validation::RunRecord record;
+                                     for (auto _ : state)
+                                       record = c->run(resolution, {scheme, tide::KernelType::wendland_c2});
+                                     using benchmark::Counter;
+                                     state.counters["wall_s"] = Counter(record.wall_seconds);
+                                     state.counters["steps"] = Counter(double(record.steps));
+                                     state.counters["fluid"] = Counter(double(record.particles));
+                                     for (const auto& metric : record.metrics)
+                                       if (metric.name == "front_error_after_offset")
+                                         state.counters["front_error"] = Counter(metric.value);
+                                   })
+          ->UseRealTime()
+          ->Unit(benchmark::kSecond)
+          ->Iterations(1);
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* huge = std::getenv("TIDE_BENCH_HUGE");
+  register_reference();
+  register_steps<2>(false);
+  register_steps<3>(huge != nullptr && std::string(huge) == "1");
+  register_features();
+  register_dam_break_runs();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,79 @@
+#include "tide/neighbor/neighbor_list.hpp"
+
+#include <array>
+
+#include "tide/core/parallel.hpp"
+
+namespace tide {
+
+namespace {
+
+// bit[k] = 2^k, loaded rather than shifted so that the candidate loop vectorises.
+constexpr std::array<std::uint64_t, 64> bit = [] {
+  std::array<std::uint64_t, 64> powers{};
+  for (int k = 0; k < 64; ++k) powers[k] = std::uint64_t(1) << k;
+  return powers;
+}();
+
+}  // namespace
+
+template <int D>
+void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x,
+                            const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x) {
+  queries_ = &queries;
+  table_ = &table;
+  const std::size_t cells = queries.occupied_cells();
+  cell_words_.resize(cells);
+  cell_first_word_.resize(cells + 1);
+  for_each_particle(cells, [&](std::size_t c) {
+    std::uint64_t candidates = 0;
+    for (std::uint32_t r = table.range_offset_[c]; r < table.range_offset_[c + 1]; ++r)
+      candidates += table.ranges_[r].end - table.ranges_[r].begin;
+    cell_words_[c] = static_cast<std::uint32_t>((candidates + 63) / 64);
+  });
+  cell_first_word_[0] = 0;
+  for (std::size_t c = 0; c < cells; ++c) {
+    const std::uint64_t particles = queries.cell_start_[c + 1] - queries.cell_start_[c];
+    cell_first_word_[c + 1] = cell_first_word_[c] + particles * cell_words_[c];
+  }
+  bits_.resize(cell_first_word_[cells]);
+  const Real support_squared = table.support_squared_;
+  for_each_particle(queries.particle_count(), [&](std::size_t i) {
+    const std::uint32_t cell = queries.particle_cell_[i];
+    std::uint64_t* out = bits_.data() + cell_first_word_[cell] + (i - queries.cell_start_[cell]) * cell_words_[cell];
+    const Vector<D> x = query_x[i];
+    // Blocks of up to 64 candidates, one bit each, in a loop the compiler vectorises over the SoA
+    // positions (a compare and an OR reduction, no branch: most candidates fail the test,
+    // unpredictably).
+    std::uint64_t word = 0;
+    std::uint64_t position = 0;
+    for (std::uint32_t r = table.range_offset_[cell]; r < table.range_offset_[cell + 1]; ++r) {
+      const CellRange range = table.ranges_[r];
+      const Vector<D> x_image = x - table.shifts_[range.shift];
+      for (Index first = range.begin; first < range.end; first += 64) {
+        const Index count = std::min<Index>(64, range.end - first);
+        std::array<const Real*, D> source;
+        for (int d = 0; d < D; ++d) source[d] = source_x.component[d] + first;
+        std::uint64_t mask = 0;
+        for (Index k = 0; k < count; ++k) {
+          Vector<D> xij;
+          for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source[d][k];
+          mask |= squared_norm<D>(xij) < support_squared ? bit[k] : 0;
+        }
+        const unsigned offset = static_cast<unsigned>(position & 63);
+        word |= mask << offset;
+        if (offset + count >= 64) {
+          out[position >> 6] = word;
+          word = offset == 0 ? 0 : mask >> (64 - offset);
+        }
+        position += count;
+      }
+    }
+    if ((position & 63) != 0) out[position >> 6] = word;
+  });
+}
+
+template class NeighborList<2>;
+template class NeighborList<3>;
+
+}  // namespace tide
