@@ -304,7 +304,8 @@ TEST(SceneReader, ReadsTheIncompressibleSchemesAndTheirSolverKeys) {
 TEST(SceneReader, ReadsARigidRotation) {
   const json document =
       with(full_2d_scene(), "/fluid/0/velocity", {{"rotation", {{"centre", {0.2, 0.4}}, {"angular_velocity", -1.5}}}});
-  const auto& rotation = std::get<scene::RigidRotation>(parse(document).fluid[0].velocity);
+  const scene::Scene s = parse(document);
+  const auto& rotation = std::get<scene::RigidRotation>(s.fluid[0].velocity);
   EXPECT_EQ(rotation.centre, vec(0.2, 0.4));
   EXPECT_EQ(rotation.angular_velocity, -1.5);
 }
