@@ -30,6 +30,28 @@ using setup::lap;
 constexpr int min_density_iterations = 2;
 constexpr int min_divergence_iterations = 1;
 
+// Chebyshev semi-iterative acceleration of the density solve's projected Jacobi sweeps (Golub &
+// Van Loan, Sec. 11.2.8; with projection, Wang 2015, "A Chebyshev semi-iterative approach for
+// accelerating projective and position-based dynamics", eq. 12): after `chebyshev_delay` plain
+// sweeps, p⁽ᵏ⁺¹⁾ = ω_k (p̂⁽ᵏ⁺¹⁾ − p⁽ᵏ⁻¹⁾) + p⁽ᵏ⁻¹⁾, with p̂ the Jacobi sweep and ω from the
+// recurrence of the Chebyshev polynomials for a Jacobi spectral radius ρ. Jacobi corrects one
+// kernel support per sweep, so the smooth errors (a whole column's pressure a few percent off)
+// take ~(depth/h)² sweeps; Chebyshev takes ~depth/h. ρ below the true radius only slows the
+// smoothest modes (|T_k(x/ρ)/T_k(1/ρ)| < 1 for ρ < x < 1); the relaxation keeps the rough modes
+// at ≥ −0.5 (effective_relaxation). Measured on the 2D tank, 25 rows, at a mean density error of
+// 1e-5: 14 sweeps per step on average (120 at most) against 57 (856) with plain Jacobi, the same
+// pressures. The divergence solve keeps plain Jacobi: accelerated, its pressure and the density
+// solve's drifted apart in opposite directions (±60% of ρ0 g depth each on the tank).
+constexpr Real chebyshev_radius = Real(0.99);
+constexpr int chebyshev_delay = 5;
+
+// ω_k of the Chebyshev recurrence after `accelerated` accelerated sweeps (Wang 2015, eq. 12).
+Real chebyshev_weight(int accelerated, Real previous_weight) {
+  constexpr Real rho2 = chebyshev_radius * chebyshev_radius;
+  if (accelerated == 0) return 2 / (2 - rho2);
+  return 4 / (4 - rho2 * previous_weight);
+}
+
 // Sum and largest value of the positive excesses of one sweep, with the particle that has it.
 struct ExcessSummary {
   Real sum = 0;
@@ -152,6 +174,8 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
   const auto factor = std::as_const(fluid_)[solve_fields_.factor];
   auto excess = fluid_[solve_fields_.density_excess];
   const Real count = static_cast<Real>(std::max<std::size_t>(fluid_.size(), 1));
+  before_sweep_.resize(fluid_.size());
+  Real weight = 1;
   SolveReport report;
   std::visit(
       [&](const auto& kernel) {
@@ -182,8 +206,14 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
           worst_excess_ = summary.max;
           if ((report.converged && report.iterations >= min_iterations) || report.iterations >= max_iterations) break;
           // Projected Jacobi: p stays ≥ 0, so the fluid takes no tension (Ihmsen et al. 2014, Alg. 1).
+          const bool accelerate = density_target && report.iterations >= chebyshev_delay;
+          if (accelerate) weight = chebyshev_weight(report.iterations - chebyshev_delay, weight);
           for_each_particle(fluid_.size(), [&](std::size_t i) {
-            pressure[i] = std::max(pressure[i] + relaxation_ * factor[i] * excess[i] / (dt * dt), Real(0));
+            const Real jacobi = std::max(pressure[i] + relaxation_ * factor[i] * excess[i] / (dt * dt), Real(0));
+            const Real before = pressure[i];
+            pressure[i] =
+                accelerate ? std::max(weight * (jacobi - before_sweep_[i]) + before_sweep_[i], Real(0)) : jacobi;
+            before_sweep_[i] = before;
           });
           ++report.iterations;
         }
@@ -279,7 +309,8 @@ void IncompressibleSph<D>::check_state() {
 
 template <int D>
 double IncompressibleSph<D>::bytes_per_particle() const {
-  return setup::bytes_per_particle<D>(fluid_, walls_, neighbors_);
+  const double scratch = fluid_.size() > 0 ? double(sizeof(Real) * before_sweep_.capacity()) / fluid_.size() : 0;
+  return setup::bytes_per_particle<D>(fluid_, walls_, neighbors_) + scratch;
 }
 
 template class IncompressibleSph<2>;
