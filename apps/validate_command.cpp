@@ -6,6 +6,7 @@
 #include <exception>
 #include <iostream>
 #include <optional>
+#include <span>
 #include <string_view>
 
 #include "run_command.hpp"
@@ -114,7 +115,21 @@ void print_outcome(const StudyRun& run) {
   std::printf("\n");
 }
 
-std::vector<StudyRun> run_study(const Plan& plan, const std::vector<int>& resolutions) {
+// The successful run of `reused` with the same case, scheme, kernel and resolution, if any.
+const StudyRun* find_reused(std::span<const StudyRun> reused, const std::string& case_name, const std::string& scheme,
+                            KernelType kernel, int resolution) {
+  const auto same = [&](const StudyRun& run) {
+    const validation::RunRecord& r = run.record;
+    return run.ok() && r.case_name == case_name && r.scheme == scheme && r.kernel == kernel_name(kernel) &&
+           r.resolution == resolution;
+  };
+  const auto found = std::find_if(reused.begin(), reused.end(), same);
+  return found == reused.end() ? nullptr : &*found;
+}
+
+// Runs the plan, taking from `reused` the runs it already has; `reused_runs` counts those.
+std::vector<StudyRun> run_study(const Plan& plan, const std::vector<int>& resolutions, std::span<const StudyRun> reused,
+                                std::size_t& reused_runs) {
   std::size_t total = 0;
   for (const Case& study_case : plan.cases) {
     total += (resolutions.empty() ? study_case.resolutions.size() : resolutions.size()) * plan.schemes.size() *
@@ -128,6 +143,13 @@ std::vector<StudyRun> run_study(const Plan& plan, const std::vector<int>& resolu
           std::printf("[%zu/%zu] %s %s/%s resolution %d: ", runs.size() + 1, total, study_case.name.c_str(),
                       scheme.c_str(), std::string(kernel_name(kernel)).c_str(), resolution);
           std::fflush(stdout);
+          if (const StudyRun* earlier = find_reused(reused, study_case.name, scheme, kernel, resolution)) {
+            runs.push_back(*earlier);
+            ++reused_runs;
+            std::printf("reused, ");
+            print_outcome(runs.back());
+            continue;
+          }
           runs.push_back(run_one(study_case, resolution, {scheme, kernel}));
           print_outcome(runs.back());
           std::fflush(stdout);
@@ -148,7 +170,8 @@ void copy_image(const fs::path& from, const fs::path& directory) {
   fs::rename(partial, to);
 }
 
-void write_report(const ValidateOptions& options, const Plan& plan, const std::vector<StudyRun>& runs) {
+void write_report(const ValidateOptions& options, const Plan& plan, const std::vector<StudyRun>& runs,
+                  std::size_t reused_runs) {
   const fs::path& out = options.output_directory;
   validation::write_csv(out / "results.csv", runs);
   validation::write_orders_csv(out / "orders.csv", validation::convergence_orders(runs));
@@ -163,6 +186,10 @@ void write_report(const ValidateOptions& options, const Plan& plan, const std::v
   if (options.docs_page.empty()) return;
   validation::StudyContext context = validation::current_context(options.command_line);
   context.build = std::string(TIDE_BUILD_TYPE) + ", " + TIDE_CXX_COMPILER;
+  if (reused_runs > 0) {
+    context.reused = std::to_string(reused_runs) + " of the " + std::to_string(runs.size()) + " runs taken from " +
+                     options.reuse.string() + ", an earlier study: their wall times were measured then";
+  }
   validation::write_markdown(options.docs_page, context, plan.cases, runs, options.docs_page.stem().string());
   std::cout << "tide: validate: wrote " << options.docs_page.string() << " and its plots in " << images.string()
             << '\n';
@@ -218,8 +245,18 @@ int validate(const ValidateOptions& options) {
                  "apt-get install gnuplot-nox)\n";
     return exit_failure;
   }
-  const std::vector<StudyRun> runs = run_study(*plan, options.resolutions);
-  write_report(options, *plan, runs);
+  std::vector<StudyRun> reused;
+  if (!options.reuse.empty()) {
+    try {
+      reused = validation::read_csv(options.reuse);
+    } catch (const std::exception& error) {
+      std::cerr << "tide: validate: --reuse: " << error.what() << '\n';
+      return exit_bad_input;
+    }
+  }
+  std::size_t reused_runs = 0;
+  const std::vector<StudyRun> runs = run_study(*plan, options.resolutions, reused, reused_runs);
+  write_report(options, *plan, runs, reused_runs);
   const auto failed = std::count_if(runs.begin(), runs.end(), [](const StudyRun& run) { return !run.ok(); });
   if (failed == 0) return exit_ok;
   std::cerr << "tide: validate: " << failed << " of " << runs.size() << " runs failed (status column of results.csv)\n";

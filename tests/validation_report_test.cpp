@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,59 @@ TEST_F(ValidationReport, CsvQuotesFieldsAndRecordsFailedRuns) {
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[1], "\"dam, break\",wcsph,wendland_c2,20,400,200,0.04,2e+06,ok,0.1");
   EXPECT_EQ(lines[2], "\"dam, break\",wcsph,wendland_c2,40,,,,,\"failed: density \"\"out of band\"\", step 12\",");
+}
+
+TEST_F(ValidationReport, CsvReadsBackWhatWasWritten) {
+  StudyRun failed = make_run("dam, break", "dfsph", 40, {});
+  failed.failure = "density \"out of band\",\nstep 12";
+  const std::vector<StudyRun> runs{make_run("dam, break", "wcsph", 20, {{"front_error", 0.1}, {"offset", 1.0 / 3}}),
+                                   failed, make_run("poiseuille", "iisph", 10, {{"velocity_l2_error", 2.5e-7}})};
+  write_csv(directory_ / "results.csv", runs);
+  const std::vector<StudyRun> read = read_csv(directory_ / "results.csv");
+  ASSERT_EQ(read.size(), runs.size());
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const RunRecord& expected = runs[k].record;
+    const RunRecord& got = read[k].record;
+    EXPECT_EQ(got.case_name, expected.case_name);
+    EXPECT_EQ(got.scheme, expected.scheme);
+    EXPECT_EQ(got.kernel, expected.kernel);
+    EXPECT_EQ(got.resolution, expected.resolution);
+    EXPECT_EQ(read[k].failure, runs[k].failure);
+    if (!runs[k].ok()) continue;
+    EXPECT_EQ(got.particles, expected.particles);
+    EXPECT_EQ(got.steps, expected.steps);
+    EXPECT_EQ(got.wall_seconds, expected.wall_seconds);  // format_shortest reads back exactly
+    ASSERT_EQ(got.metrics.size(), expected.metrics.size());
+    for (std::size_t m = 0; m < expected.metrics.size(); ++m) {
+      EXPECT_EQ(got.metrics[m].name, expected.metrics[m].name);
+      EXPECT_EQ(got.metrics[m].value, expected.metrics[m].value);
+    }
+  }
+}
+
+TEST_F(ValidationReport, CsvReaderNamesTheLineAndWhatItExpected) {
+  const auto error_of = [&](const std::string& text) {
+    std::ofstream(directory_ / "bad.csv") << text;
+    try {
+      read_csv(directory_ / "bad.csv");
+    } catch (const std::runtime_error& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  const std::string header =
+      "case,scheme,kernel,resolution,particles,steps,wall_seconds,particle_steps_per_second,status,e\n";
+  EXPECT_NE(error_of("a,b\n").find("bad.csv:1: expected the header"), std::string::npos);
+  EXPECT_NE(error_of(header + "c,wcsph,wendland_c2,20,400,200,0.04,2e+06,ok\n").find("bad.csv:2: expected 10 fields"),
+            std::string::npos);
+  EXPECT_NE(error_of(header + "c,wcsph,wendland_c2,twenty,400,200,0.04,2e+06,ok,1\n")
+                .find("bad.csv:2, column resolution: expected a number, found \"twenty\""),
+            std::string::npos);
+  EXPECT_NE(error_of(header + "c,wcsph,wendland_c2,20,400,200,0.04,2e+06,done,1\n").find("column status"),
+            std::string::npos);
+  EXPECT_NE(error_of(header + "\"c,wcsph\n").find("line 2: a quoted field is not closed"), std::string::npos);
+  EXPECT_NE(error_of("").find("expected the header"), std::string::npos);
+  EXPECT_THROW(read_csv(directory_ / "missing.csv"), std::runtime_error);
 }
 
 TEST(ConvergenceOrders, PowerLawErrorsGiveTheirExponent) {

@@ -72,6 +72,7 @@ void write_introduction(std::ostream& out, const StudyContext& context) {
   table_row(out, {"precision", cell(context.precision)});
   if (!context.build.empty()) table_row(out, {"build", cell(context.build)});
   table_row(out, {"date", cell(context.date)});
+  if (!context.reused.empty()) table_row(out, {"reused runs", cell(context.reused)});
   out << "\n*wall s* is the time stepping alone, without set-up or metrics; *particle-steps/s* is fluid\n"
       << "particles × steps / wall s. An order of convergence p assumes e ∝ r^-p: between consecutive\n"
       << "resolutions p = ln(e_coarse / e_fine) / ln(r_fine / r_coarse); the least-squares p is the slope of\n"

@@ -38,6 +38,11 @@ struct ConvergenceOrder {
 /// measurements and metrics are empty cells. The file is replaced atomically.
 void write_csv(const std::filesystem::path& path, std::span<const StudyRun> runs);
 
+/// Reads back a results.csv that write_csv wrote: one StudyRun per row, metrics from the
+/// non-empty metric cells. Throws std::runtime_error naming the file, the line and what was
+/// expected when the file cannot be read or is not in that layout.
+std::vector<StudyRun> read_csv(const std::filesystem::path& path);
+
 /// For each (case, scheme, kernel) group of successful runs sorted by resolution r, and each of
 /// its metrics e: p = ln(e_coarse / e_fine) / ln(r_fine / r_coarse) between consecutive
 /// resolutions, then (for three or more) the least-squares slope of ln e against ln r over the
@@ -68,6 +73,7 @@ struct StudyContext {
   std::string precision;  // the Real type of the particle data
   std::string build;      // build type and compiler, where known
   std::string date;       // UTC date of the study, YYYY-MM-DD
+  std::string reused;     // which runs were taken from an earlier study (tide validate --reuse); empty: none
 };
 
 /// The context of a study run now by `command` in this process: machine from /proc/cpuinfo,

@@ -19,6 +19,15 @@ void write_text_file(const std::filesystem::path& path, std::string_view text);
 /// quotes doubled).
 void write_csv_row(std::ostream& out, const std::vector<std::string>& fields);
 
+/// The records of a CSV text (RFC 4180, as write_csv_row writes them: quoted fields may hold
+/// commas, doubled quotes and line breaks), each with the 1-based line it starts on. Throws
+/// std::invalid_argument naming the line of an unterminated quote or of text after a closing quote.
+struct CsvRecord {
+  std::size_t line = 0;
+  std::vector<std::string> fields;
+};
+std::vector<CsvRecord> parse_csv(std::string_view text);
+
 /// The shortest decimal text that reads back as exactly `value`.
 std::string format_shortest(double value);
 
