@@ -78,9 +78,12 @@ int main(int argc, char** argv) {
                        "directory for results.csv, orders.csv and the plots (default: validation-results)");
   validate->add_option("--docs", validate_options.docs_page,
                        "also write this markdown page, its plots beside it in <page name>/ (docs/validation.md)");
-  validate->add_option("--reuse", validate_options.reuse,
-                       "take the successful runs of an earlier results.csv (same case, scheme, kernel and "
-                       "resolution) instead of running them again; their wall times are from that study");
+  validate
+      ->add_option("--reuse", validate_options.reuse,
+                   "take the runs of earlier results.csv files (same case, scheme, kernel and "
+                   "resolution) instead of running them again; their wall times are from those studies")
+      ->delimiter(',')
+      ->allow_extra_args(false);
   validate->add_flag("--list", validate_options.list,
                      "list the cases, their default resolutions, the schemes and the kernels");
   validate->add_option("--threads", threads, "number of worker threads (default: all cores)")

@@ -115,12 +115,12 @@ void print_outcome(const StudyRun& run) {
   std::printf("\n");
 }
 
-// The successful run of `reused` with the same case, scheme, kernel and resolution, if any.
+// The run of `reused` (successful or failed) with the same case, scheme, kernel and resolution, if any.
 const StudyRun* find_reused(std::span<const StudyRun> reused, const std::string& case_name, const std::string& scheme,
                             KernelType kernel, int resolution) {
   const auto same = [&](const StudyRun& run) {
     const validation::RunRecord& r = run.record;
-    return run.ok() && r.case_name == case_name && r.scheme == scheme && r.kernel == kernel_name(kernel) &&
+    return r.case_name == case_name && r.scheme == scheme && r.kernel == kernel_name(kernel) &&
            r.resolution == resolution;
   };
   const auto found = std::find_if(reused.begin(), reused.end(), same);
@@ -187,8 +187,10 @@ void write_report(const ValidateOptions& options, const Plan& plan, const std::v
   validation::StudyContext context = validation::current_context(options.command_line);
   context.build = std::string(TIDE_BUILD_TYPE) + ", " + TIDE_CXX_COMPILER;
   if (reused_runs > 0) {
+    std::vector<std::string> files;
+    for (const fs::path& file : options.reuse) files.push_back(file.string());
     context.reused = std::to_string(reused_runs) + " of the " + std::to_string(runs.size()) + " runs taken from " +
-                     options.reuse.string() + ", an earlier study: their wall times were measured then";
+                     joined(files) + " (earlier runs of the study: their wall times were measured then)";
   }
   validation::write_markdown(options.docs_page, context, plan.cases, runs, options.docs_page.stem().string());
   std::cout << "tide: validate: wrote " << options.docs_page.string() << " and its plots in " << images.string()
@@ -246,9 +248,10 @@ int validate(const ValidateOptions& options) {
     return exit_failure;
   }
   std::vector<StudyRun> reused;
-  if (!options.reuse.empty()) {
+  for (const fs::path& file : options.reuse) {
     try {
-      reused = validation::read_csv(options.reuse);
+      const std::vector<StudyRun> earlier = validation::read_csv(file);
+      reused.insert(reused.end(), earlier.begin(), earlier.end());
     } catch (const std::exception& error) {
       std::cerr << "tide: validate: --reuse: " << error.what() << '\n';
       return exit_bad_input;

@@ -12,8 +12,8 @@ struct ValidateOptions {
   std::vector<std::string> schemes;  // empty: every scheme
   std::vector<std::string> kernels;  // empty: the default kernels of the study
   std::filesystem::path output_directory = "validation-results";
-  std::filesystem::path docs_page;  // empty: no markdown page
-  std::filesystem::path reuse;      // an earlier results.csv whose successful runs are taken instead of rerun
+  std::filesystem::path docs_page;           // empty: no markdown page
+  std::vector<std::filesystem::path> reuse;  // earlier results.csv files whose runs are taken, not rerun
   bool list = false;
   std::string command_line;  // as typed, for the page's "reproduce it with"
 };
