@@ -194,6 +194,12 @@ Real Wcsph<D>::pair_strength(Index a, Index b) const {
 }
 
 template <int D>
+Real Wcsph<D>::wall_strength(Index a) const {
+  if (!tension_ || tension_->wall_strength.empty()) return 0;
+  return tension_->wall_strength[a];
+}
+
+template <int D>
 void Wcsph<D>::add_surface_tension() {
   const std::span<const Index> phase = phases_ ? std::as_const(fluid_)[fluid_fields_.phase] : std::span<const Index>{};
   const passes::SurfaceTensionSettings& s = *tension_;

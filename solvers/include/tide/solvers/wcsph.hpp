@@ -64,6 +64,8 @@ class Wcsph final : public Simulation<D> {
   /// The pairwise model's force strength s_ab between phases a and b (Tartakovsky & Meakin 2005);
   /// 0 without it.
   Real pair_strength(Index a, Index b) const;
+  /// The pairwise model's force strength s_aw between phase a and the walls; 0 without it.
+  Real wall_strength(Index a) const;
   double bytes_per_particle() const override;
 
  private:
