@@ -75,6 +75,9 @@ class Wcsph final : public Simulation<D> {
   void build_pipeline();
   void compute_density_rate(const Vector<D>& gravity);
   void shift_particles(Real dt);
+  /// The inflow buffer (domain.inflow): its particles at the inflow velocity, moved as if they
+  /// had drifted at it over `drift_time`; nothing without an inflow.
+  void impose_inflow(Real drift_time);
   void check_state();
   /// What bound the last time step, for an instability message: a step above its stable limit
   /// is a common cause.
