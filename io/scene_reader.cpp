@@ -369,6 +369,9 @@ class SceneParser {
     if (const Node probes = child(root, "probes"); probes.present()) scene.probes = read_probes(probes, scene.domain);
     check_geometry(scene);
     check_phases(scene);
+    if (scene.domain.inflow && scene.solver.scheme != scene::Scheme::wcsph)
+      fail("/solver/scheme", "\"wcsph\" with a domain inflow",
+           "\"" + std::string(scheme_names[static_cast<std::size_t>(scene.solver.scheme)].name) + "\"");
     return scene;
   }
 
@@ -702,10 +705,25 @@ class SceneParser {
       }
       return scene::domain_around(*walls.container, walls.layers * spacing_, dimension_);
     }
-    expect_object(node, {"min", "max", "periodic"});
+    expect_object(node, {"min", "max", "periodic", "inflow"});
     scene::Domain domain{corners(node)};
     if (const Node periodic = child(node, "periodic"); periodic.present()) domain.periodic = flags(periodic);
+    if (const Node inflow = child(node, "inflow"); inflow.present()) domain.inflow = read_inflow(inflow, domain);
     return domain;
+  }
+
+  /// Pseudo-periodic inflow/outflow: needs x periodic and a buffer shorter than the domain.
+  scene::Inflow read_inflow(const Node& node, const scene::Domain& domain) const {
+    expect_object(node, {"velocity", "length"});
+    if (!domain.periodic[0])
+      fail(node, "no inflow unless the x axis is periodic (\"periodic\": [true, ...]): the outflow re-enters there");
+    scene::Inflow inflow;
+    inflow.velocity = number(child(node, "velocity"), any_number);
+    const double width = domain.box.max[0] - domain.box.min[0];
+    inflow.length =
+        number(child(node, "length"), "a number > 0 and < the domain's length along x (" + format_number(width) + ")",
+               [&](double length) { return length > 0 && length < width; });
+    return inflow;
   }
 
   void read_solver(const Node& node, scene::Solver& solver) const {

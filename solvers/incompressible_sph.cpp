@@ -86,6 +86,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
       neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_) {
   if (!(reference_sound_speed_ > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
+  if (scene.domain.inflow) throw std::invalid_argument(scene.source + ": a domain inflow needs the wcsph scheme");
   relaxation_ =
       effective_relaxation(scheme_, jacobi_spectral_bound<D>(kernel_, static_cast<Real>(scene.particle_spacing)));
   const Real particle_mass = setup::particle_mass<D>(scene, kernel_, rest_density_);

@@ -67,7 +67,9 @@ passes::SurfaceTensionSettings surface_tension_settings(const scene::Scene& scen
   // σ = k s), and Young's law cos θ = (σ_bw − σ_aw)/σ_ab for the first fluid a
   // (Tartakovsky & Meakin 2005, Sec. 3). One fluid: s = σ/k and s_aw = s (1 + cos θ)/2.
   // Two fluids: s_aa = s_bb = σ/k and s_ab = s/2 make σ_ab = σ; s_aw − s_bw = s cos θ / 2, with
-  // s_aw + s_bw = s.
+  // s_aw + s_bw = s. The wall particles continue the fluid's lattice, so the fluid–wall lattice sum
+  // is k too; tests/contact_angle_test.cpp finds the energy minimum of lattice-sampled drops within
+  // 1° of θ.
   s.pair_strength.assign(s.phase_count * s.phase_count, 0);
   s.wall_strength.assign(s.phase_count, 0);
   if (tension.model == scene::SurfaceTensionModel::pairwise) {

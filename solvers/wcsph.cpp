@@ -13,6 +13,7 @@
 
 #include "passes/continuity.hpp"
 #include "passes/density_summation.hpp"
+#include "passes/inflow.hpp"
 #include "passes/momentum.hpp"
 #include "passes/particle_shifting.hpp"
 #include "passes/surface_tension.hpp"
@@ -92,7 +93,9 @@ Wcsph<D>::~Wcsph() = default;
 template <int D>
 void Wcsph<D>::build_pipeline() {
   const scene::Solver& solver = scene_.solver;
-  pipeline_ = {"kick_drift", "neighbor_search"};
+  pipeline_ = {"kick_drift"};
+  if (scene_.domain.inflow) pipeline_.push_back("inflow_drift");
+  pipeline_.push_back("neighbor_search");
   if (solver.density == scene::DensityMethod::continuity) {
     pipeline_.insert(pipeline_.end(), {"continuity", "equation_of_state"});
   } else {
@@ -112,7 +115,9 @@ void Wcsph<D>::build_pipeline() {
       pipeline_.push_back("pairwise_surface_force");
       break;
   }
-  pipeline_.insert(pipeline_.end(), {"kick", "state_check"});
+  pipeline_.push_back("kick");
+  if (scene_.domain.inflow) pipeline_.push_back("inflow_velocity");
+  pipeline_.push_back("state_check");
   if (solver.shifting != scene::Shifting::none)
     pipeline_.insert(pipeline_.end(), {"position_divergence", "particle_shifting"});
 }
@@ -194,6 +199,12 @@ Real Wcsph<D>::pair_strength(Index a, Index b) const {
 }
 
 template <int D>
+Real Wcsph<D>::wall_strength(Index a) const {
+  if (!tension_ || tension_->wall_strength.empty()) return 0;
+  return tension_->wall_strength[a];
+}
+
+template <int D>
 void Wcsph<D>::add_surface_tension() {
   const std::span<const Index> phase = phases_ ? std::as_const(fluid_)[fluid_fields_.phase] : std::span<const Index>{};
   const passes::SurfaceTensionSettings& s = *tension_;
@@ -249,6 +260,7 @@ StepReport Wcsph<D>::step() {
       x.set(i, x[i] + dt * half_step_velocity);
     });
   }
+  impose_inflow(dt);
   lap(clock, pass_times_.integration);
   report.removed = neighbors_.update_fluid(fluid_, walls_);
   lap(clock, pass_times_.neighbor_search);
@@ -267,6 +279,7 @@ StepReport Wcsph<D>::step() {
     const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
     for_each_particle(fluid_.size(), [&](std::size_t i) { v.set(i, v[i] + (dt / 2) * a[i]); });
   }
+  impose_inflow(0);
   time_ += dt;
   ++step_count_;
   check_state();
@@ -276,6 +289,14 @@ StepReport Wcsph<D>::step() {
     lap(clock, pass_times_.shifting);
   }
   return report;
+}
+
+template <int D>
+void Wcsph<D>::impose_inflow(Real drift_time) {
+  const auto& inflow = scene_.domain.inflow;
+  if (!inflow) return;
+  passes::impose_inflow_velocity<D>(static_cast<Real>(scene_.domain.box.min[0]), static_cast<Real>(inflow->length),
+                                    static_cast<Real>(inflow->velocity), drift_time, fluid_, fluid_fields_);
 }
 
 template <int D>

@@ -87,6 +87,37 @@ inline scene::Scene rayleigh_taylor_scene(double spacing) {
   return s;
 }
 
+/// A drop of material 0 sitting on the floor of a closed `width` × `height` box of walls, in ambient
+/// fluid (material 1, same density 1, ν = 0.05, sound speed 20): a circular cap of contact angle
+/// `cap_angle` (degrees) with the area of a half-disc of radius `radius`, centred on the floor.
+/// Pairwise tension σ = 1 with the wall strengths set for `contact_angle`; support 4Δx (h = 2Δx,
+/// 4 wall layers) and background pressure 150, as in the pairwise Laplace test.
+inline scene::Scene sessile_drop_scene(double spacing, double radius, double cap_angle, double contact_angle,
+                                       double width, double height) {
+  scene::Scene s;
+  s.source = "sessile_drop";
+  s.particle_spacing = spacing;
+  s.kernel = KernelType::wendland_c2;
+  s.smoothing_ratio = 2;
+  s.materials = {{"drop", 1, 0.05, 20.0, std::nullopt}, {"ambient", 1, 0.05, 20.0, std::nullopt}};
+  s.walls.layers = 4;
+  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {width, height, 0}}, false};
+  s.domain = scene::domain_around(*s.walls.container, s.walls.layers * spacing, 2);
+  s.fluid.push_back({1, scene::Box{{0, 0, 0}, {width, height, 0}}});
+  // A cap of angle θ on a circle of radius r has the area r² (θ − sin θ cos θ).
+  const double angle = cap_angle * std::numbers::pi / 180;
+  const double area = std::numbers::pi * radius * radius / 2;
+  const double circle = std::sqrt(area / (angle - std::sin(angle) * std::cos(angle)));
+  s.fluid.push_back({0, scene::Ball{{width / 2, -circle * std::cos(angle), 0}, circle}});
+  s.gravity = {0, 0, 0};
+  s.solver.equation_of_state = scene::EquationOfState::linear;
+  s.solver.viscosity = scene::ViscosityModel::laminar;
+  s.solver.clamp_negative_pressure = false;
+  s.solver.background_pressure = 150;
+  s.solver.surface_tension = {scene::SurfaceTensionModel::pairwise, 1.0, contact_angle, 0};
+  return s;
+}
+
 /// The second rising-bubble case of Hysing et al. 2009 (Int. J. Numer. Meth. Fluids 60:1259): a
 /// bubble of air (ρ = 1, μ = 0.1) of radius 0.25 at (0.5, 0.5) in water (ρ = 1000, μ = 10) in a
 /// closed 1 × 2 box, g = 0.98, σ = 1.96 (csf). Sound speeds give both phases ρc² = 25000

@@ -637,6 +637,30 @@ TEST(SceneReaderRefuses, UnknownOrRepeatedOutputFields) {
                  "a non-empty array of field names");
 }
 
+TEST(SceneReader, PseudoPeriodicInflow) {
+  const json periodic = with(minimal_scene(), "/domain/periodic", json::array({true, false}));
+  const scene::Scene s = parse(with(periodic, "/domain/inflow", json{{"velocity", 0.5}, {"length", 0.2}}));
+  ASSERT_TRUE(s.domain.inflow);
+  EXPECT_EQ(s.domain.inflow->velocity, 0.5);
+  EXPECT_EQ(s.domain.inflow->length, 0.2);
+  EXPECT_FALSE(parse(periodic).domain.inflow);
+}
+
+TEST(SceneReaderRefuses, AnInflowWithoutAPeriodicXAxisOrWcsph) {
+  const json inflow{{"velocity", 0.5}, {"length", 0.2}};
+  expect_refused(with(minimal_scene(), "/domain/inflow", inflow), "/domain/inflow",
+                 "no inflow unless the x axis is periodic");
+  const json periodic = with(minimal_scene(), "/domain/periodic", json::array({true, false}));
+  const std::string length = "a number > 0 and < the domain's length along x (1)";
+  expect_refused(with(periodic, "/domain/inflow", json{{"velocity", 0.5}, {"length", 1}}), "/domain/inflow/length",
+                 length);
+  expect_refused(with(periodic, "/domain/inflow", json{{"velocity", 0.5}}), "/domain/inflow/length", length);
+  expect_refused(with(periodic, "/domain/inflow", json{{"velocity", "fast"}, {"length", 0.2}}),
+                 "/domain/inflow/velocity", "a number");
+  expect_refused(with(with(periodic, "/domain/inflow", inflow), "/solver", json{{"scheme", "dfsph"}}), "/solver/scheme",
+                 "\"wcsph\" with a domain inflow");
+}
+
 TEST(SceneReaderRefuses, NeitherDomainNorContainer) {
   expect_refused(without(without(full_2d_scene(), "/domain"), "/walls/container"), "/domain",
                  "only a scene with a wall container");

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "inflow_scenes.hpp"
 #include "multiphase_scenes.hpp"
 #include "tide/core/kernels/cubic_spline.hpp"
 #include "tide/core/parallel.hpp"
@@ -155,6 +156,15 @@ TEST(ThreadDeterminism, MultiphaseWithEachTensionModelIsBitwiseIdentical) {
     SCOPED_TRACE(static_cast<int>(model));
     EXPECT_TRUE(same_bytes(multiphase_state_after_100_steps(1, model), multiphase_state_after_100_steps(2, model)));
   }
+}
+
+// The inflow buffer of a pseudo-periodic channel, whose fluid crosses the periodic seam.
+TEST(ThreadDeterminism, InflowChannelIsBitwiseIdentical) {
+  const auto state = [](int threads) {
+    const ThreadLimit limit(threads);
+    return state_after_100_steps(*make_simulation<2>(test::inflow_channel_scene(1.0 / 40)));
+  };
+  EXPECT_TRUE(same_bytes(state(1), state(2)));
 }
 
 }  // namespace

@@ -99,10 +99,18 @@ struct Walls {
   std::vector<Obstacle> obstacles;
 };
 
+/// Pseudo-periodic inflow/outflow along x (a periodic axis): fluid leaving at max x re-enters at
+/// min x, where the particles within `length` of the domain's min x move at `velocity` along x.
+struct Inflow {
+  double velocity = 0;  // m/s
+  double length = 0;    // m, the inflow buffer's extent along x
+};
+
 /// The region particles may occupy; a particle leaving it on a closed axis is removed.
 struct Domain {
   Box box;
   std::array<bool, 3> periodic{};
+  std::optional<Inflow> inflow{};
 };
 
 /// The domain a container needs when the scene gives none: its inner box grown by the wall

@@ -64,6 +64,8 @@ class Wcsph final : public Simulation<D> {
   /// The pairwise model's force strength s_ab between phases a and b (Tartakovsky & Meakin 2005);
   /// 0 without it.
   Real pair_strength(Index a, Index b) const;
+  /// The pairwise model's force strength s_aw between phase a and the walls; 0 without it.
+  Real wall_strength(Index a) const;
   double bytes_per_particle() const override;
 
  private:
@@ -73,6 +75,9 @@ class Wcsph final : public Simulation<D> {
   void build_pipeline();
   void compute_density_rate(const Vector<D>& gravity);
   void shift_particles(Real dt);
+  /// The inflow buffer (domain.inflow): its particles at the inflow velocity, moved as if they
+  /// had drifted at it over `drift_time`; nothing without an inflow.
+  void impose_inflow(Real drift_time);
   void check_state();
   /// What bound the last time step, for an instability message: a step above its stable limit
   /// is a common cause.
