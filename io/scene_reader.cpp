@@ -273,6 +273,10 @@ constexpr std::array<Named<scene::ViscosityModel>, 2> viscosity_model_names{
     {{"artificial", scene::ViscosityModel::artificial}, {"laminar", scene::ViscosityModel::laminar}}};
 constexpr std::array<Named<scene::Shifting>, 2> shifting_names{
     {{"none", scene::Shifting::none}, {"fickian", scene::Shifting::fickian}}};
+constexpr std::array<Named<scene::SurfaceTensionModel>, 3> surface_tension_model_names{
+    {{"csf", scene::SurfaceTensionModel::csf},
+     {"akinci", scene::SurfaceTensionModel::akinci},
+     {"pairwise", scene::SurfaceTensionModel::pairwise}}};
 constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
     {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
 constexpr std::array<Named<scene::ProbeType>, 2> probe_type_names{
@@ -364,6 +368,7 @@ class SceneParser {
     if (const Node output = child(root, "output"); output.present()) read_output(output, scene.output);
     if (const Node probes = child(root, "probes"); probes.present()) scene.probes = read_probes(probes, scene.domain);
     check_geometry(scene);
+    check_phases(scene);
     return scene;
   }
 
@@ -725,7 +730,8 @@ class SceneParser {
                          "max_density_error",
                          "max_divergence_error",
                          "max_solver_iterations",
-                         "max_failed_solves"});
+                         "max_failed_solves",
+                         "surface_tension"});
     read_optional(node, "scheme", solver.scheme, scheme_names);
     read_optional(node, "equation_of_state", solver.equation_of_state, equation_of_state_names);
     read_optional(node, "tait_exponent", solver.tait_exponent, positive);
@@ -750,6 +756,61 @@ class SceneParser {
     read_optional(node, "max_solver_iterations", solver.max_solver_iterations);
     read_optional(node, "max_failed_solves", solver.max_failed_solves);
     read_optional(node, "artificial_stress", solver.artificial_stress, non_negative);
+    if (const Node tension = child(node, "surface_tension"); tension.present())
+      read_surface_tension(tension, solver.surface_tension);
+  }
+
+  void read_surface_tension(const Node& node, scene::SurfaceTension& tension) const {
+    expect_object(node, {"model", "coefficient", "contact_angle", "adhesion"});
+    tension.model = choice(child(node, "model"), surface_tension_model_names);
+    tension.coefficient = number(child(node, "coefficient"), positive);
+    const Node angle = child(node, "contact_angle");
+    if (angle.present()) {
+      if (tension.model != scene::SurfaceTensionModel::pairwise)
+        fail(angle, "no contact_angle: only the pairwise model sets the wetting by an angle (akinci: adhesion)");
+      tension.contact_angle =
+          number(angle, "an angle in degrees in (0, 180)", [](double x) { return x > 0 && x < 180; });
+    }
+    const Node adhesion = child(node, "adhesion");
+    if (adhesion.present()) {
+      if (tension.model != scene::SurfaceTensionModel::akinci)
+        fail(adhesion, "no adhesion: only the akinci model has a wall adhesion coefficient (pairwise: contact_angle)");
+      tension.adhesion = number(adhesion, non_negative);
+    }
+  }
+
+  /// What several fluid materials (a multiphase scene) and surface tension need of the solver.
+  void check_phases(const scene::Scene& scene) const {
+    const std::size_t fluids = scene::fluid_material_count(scene);
+    const scene::Solver& solver = scene.solver;
+    if (fluids > 1) {
+      if (solver.scheme != scene::Scheme::wcsph)
+        fail("/solver/scheme", "\"wcsph\" for a scene with several fluid materials (multiphase)",
+             "\"" + std::string(scheme_names[static_cast<std::size_t>(solver.scheme)].name) + "\"");
+      if (solver.density != scene::DensityMethod::summation)
+        fail("/solver/density", "\"summation\" for a scene with several fluid materials (number density)",
+             "\"continuity\"");
+      if (solver.artificial_stress > 0)
+        fail("/solver/artificial_stress", "0 for a scene with several fluid materials",
+             format_number(solver.artificial_stress));
+    }
+    const scene::SurfaceTensionModel model = solver.surface_tension.model;
+    if (model != scene::SurfaceTensionModel::none) {
+      if (solver.scheme != scene::Scheme::wcsph)
+        fail("/solver/scheme", "\"wcsph\" with surface tension",
+             "\"" + std::string(scheme_names[static_cast<std::size_t>(solver.scheme)].name) + "\"");
+      if (model == scene::SurfaceTensionModel::csf && fluids != 2)
+        fail("/solver/surface_tension/model", "a model for this scene: \"csf\" needs exactly two fluid materials",
+             "\"csf\" with " + std::to_string(fluids) + " fluid material" + (fluids == 1 ? "" : "s"));
+      if (fluids > 2)
+        fail("/solver/surface_tension/model", "surface tension between at most two fluid materials",
+             std::to_string(fluids) + " fluid materials");
+    }
+    for (std::size_t k = 0; k < scene.output.fields.size(); ++k) {
+      if (scene.output.fields[k] == "phase" && fluids < 2)
+        fail("/output/fields/" + std::to_string(k), "a field this scene has (\"phase\" needs several fluid materials)",
+             "\"phase\"");
+    }
   }
 
   scene::Time read_time(const Node& node) const {

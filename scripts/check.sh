@@ -4,8 +4,8 @@
 #   1. builds everything with -Werror in double precision (build/) and runs every test;
 #   2. builds and runs the tests in single precision (build-float/);
 #   3. installs the double build and builds + runs examples/embed against the installed package;
-#   4. builds the unit tests with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)
-#      and runs them;
+#   4. builds the unit tests (target tide_unit_tests) with AddressSanitizer +
+#      UndefinedBehaviorSanitizer (build-asan/) and runs them;
 #   5. builds the scene-parser fuzzer with clang + ASan + UBSan (build-fuzz/) and fuzzes for 60 s
 #      (docs/stability.md, "Bad input").
 # Stops at the first failure. JOBS (default: nproc) sets the build and test parallelism;
@@ -57,7 +57,7 @@ section "AddressSanitizer + UndefinedBehaviorSanitizer: configure and build the 
 # -Wstringop-* warnings; the builds above already hold the code to -Werror.
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTIDE_SANITIZE=address,undefined -DTIDE_WERROR=OFF \
   -DTIDE_BUILD_BENCH=OFF -DTIDE_BUILD_APPS=OFF
-cmake --build build-asan -j "$jobs"
+cmake --build build-asan -j "$jobs" --target tide_unit_tests
 
 section "AddressSanitizer + UndefinedBehaviorSanitizer: unit tests"
 ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=1:strict_init_order=1}" \

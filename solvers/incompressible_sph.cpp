@@ -101,6 +101,10 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   compute_density_and_factor();
   compute_non_pressure_acceleration();
   check_state();
+  pipeline_ = {"predict_velocity", "density_solve", "drift", "neighbor_search", "density_summation", "pressure_factor"};
+  if (scheme_.divergence_solve) pipeline_.push_back("divergence_solve");
+  if (scene.walls.slip == scene::WallSlip::no_slip) pipeline_.push_back("wall_state");
+  pipeline_.insert(pipeline_.end(), {"non_pressure_momentum", "state_check"});
 }
 
 template <int D>

@@ -123,7 +123,13 @@ ParticleSamples<D> sample_fluid(const scene::Scene& scene) {
   const Real spacing = static_cast<Real>(scene.particle_spacing);
   const Vector<D> anchor = lattice_anchor<D>(scene);
   ParticleSamples<D> samples;
-  for (const scene::FluidBlock& block : scene.fluid) {
+  const auto inside_block = [](const scene::FluidBlock& block, const Vector<D>& p) {
+    if (const auto* ball = std::get_if<scene::Ball>(&block.shape))
+      return (p - to_vector<D>(ball->centre)).norm() < Real(ball->radius);
+    return inside_box<D>(p, std::get<scene::Box>(block.shape));
+  };
+  for (std::size_t k = 0; k < scene.fluid.size(); ++k) {
+    const scene::FluidBlock& block = scene.fluid[k];
     Vector<D> lower, upper;
     if (const auto* box = std::get_if<scene::Box>(&block.shape)) {
       lower = to_vector<D>(box->min);
@@ -134,14 +140,15 @@ ParticleSamples<D> sample_fluid(const scene::Scene& scene) {
       upper = to_vector<D>(ball.centre) + Vector<D>::Constant(Real(ball.radius));
     }
     for_each_lattice_point<D>(anchor, spacing, lower, upper, [&](const Vector<D>& p) {
-      if (const auto* ball = std::get_if<scene::Ball>(&block.shape)) {
-        if (!((p - to_vector<D>(ball->centre)).norm() < Real(ball->radius))) return;
-      }
+      if (!inside_block(block, p)) return;
+      for (std::size_t later = k + 1; later < scene.fluid.size(); ++later)
+        if (inside_block(scene.fluid[later], p)) return;
       if (scene.walls.container && !inside_box<D>(p, scene.walls.container->inner)) return;
       for (const auto& obstacle : scene.walls.obstacles)
         if (depth_in_obstacle<D>(p, obstacle) > 0) return;
       samples.positions.push_back(p);
       samples.velocities.push_back(initial_velocity<D>(block, p));
+      samples.materials.push_back(block.material);
     });
   }
   return samples;

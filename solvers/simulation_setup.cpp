@@ -69,15 +69,20 @@ Real lattice_kernel_sum(const Kernel& kernel, const scene::Scene& scene) {
 
 }  // namespace
 
+const scene::Material& reference_material(const scene::Scene& scene) {
+  if (scene.materials.empty()) throw std::invalid_argument(scene.source + ": the scene needs a fluid material");
+  return scene.materials.at(scene.fluid.empty() ? 0 : scene.fluid.front().material);
+}
+
 const scene::Material& single_material(const scene::Scene& scene) {
   if (scene.materials.empty()) throw std::invalid_argument(scene.source + ": the scene needs a fluid material");
   for (const auto& block : scene.fluid) {
     if (block.material != scene.fluid.front().material)
       throw std::invalid_argument(scene.source +
-                                  ": this solver takes a single fluid material; several fluids need the "
-                                  "multiphase scheme");
+                                  ": this solver takes a single fluid material; several fluid materials need "
+                                  "solver.scheme \"wcsph\"");
   }
-  return scene.materials.at(scene.fluid.empty() ? 0 : scene.fluid.front().material);
+  return reference_material(scene);
 }
 
 Real reference_sound_speed(const scene::Material& material) {
@@ -99,8 +104,39 @@ Real particle_mass(const scene::Scene& scene, const AnyKernel<D>& kernel, Real r
 }
 
 template <int D>
-ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_density, FluidFields<D>& fields) {
-  ParticleSet<D> fluid = make_particles<D>(sample_fluid<D>(scene), mass, "velocity");
+Phases make_phases(const scene::Scene& scene, const AnyKernel<D>& kernel) {
+  const Real lattice_sum = std::visit([&](const auto& k) { return lattice_kernel_sum<D>(k, scene); }, kernel);
+  std::vector<bool> used(scene.materials.size(), false);
+  for (const scene::FluidBlock& block : scene.fluid) used.at(block.material) = true;
+  Phases phases;
+  phases.first_fluid = static_cast<std::size_t>(std::find(used.begin(), used.end(), true) - used.begin());
+  phases.lightest_density = std::numeric_limits<Real>::max();
+  for (std::size_t k = 0; k < scene.materials.size(); ++k) {
+    const scene::Material& material = scene.materials[k];
+    const Real rho0 = static_cast<Real>(material.rest_density);
+    const Real c0 = reference_sound_speed(material);
+    if (used[k] && !(c0 > 0))
+      throw std::invalid_argument(scene.source + ": material \"" + material.name +
+                                  "\" needs a positive sound_speed or max_speed");
+    phases.table.push_back(
+        {rho0, rho0 / lattice_sum, rho0 * static_cast<Real>(material.kinematic_viscosity),
+         EquationOfState(scene.solver.equation_of_state, rho0, c0, static_cast<Real>(scene.solver.tait_exponent),
+                         static_cast<Real>(scene.solver.background_pressure))});
+    if (!used[k]) continue;
+    phases.lightest_density = std::min(phases.lightest_density, rho0);
+    phases.densest_density = std::max(phases.densest_density, rho0);
+    phases.fastest_sound = std::max(phases.fastest_sound, c0);
+    phases.largest_kinematic_viscosity =
+        std::max(phases.largest_kinematic_viscosity, static_cast<Real>(material.kinematic_viscosity));
+  }
+  return phases;
+}
+
+template <int D>
+ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_density, FluidFields<D>& fields,
+                          const Phases* phases) {
+  const ParticleSamples<D> samples = sample_fluid<D>(scene);
+  ParticleSet<D> fluid = make_particles<D>(samples, mass, "velocity");
   fields = {fluid.position(),
             fluid.vector("velocity"),
             fluid.add_vector("acceleration"),
@@ -109,8 +145,21 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
             fluid.add_scalar("pressure"),
             ScalarField{},
             VectorField{},
-            ScalarField{}};
+            ScalarField{},
+            IndexField{},
+            VectorField{}};
   for (Real& rho : fluid[fields.density]) rho = rest_density;
+  if (phases) {
+    fields.phase = fluid.add_index("phase");
+    auto phase = fluid[fields.phase];
+    auto m = fluid[fields.mass];
+    auto rho = fluid[fields.density];
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      phase[i] = static_cast<Index>(samples.materials[i]);
+      m[i] = phases->table[samples.materials[i]].mass;
+      rho[i] = phases->table[samples.materials[i]].rest_density;
+    }
+  }
   return fluid;
 }
 
@@ -166,13 +215,15 @@ std::string format_number(double value) {
 
 template GridDomain<2> grid_domain<2>(const scene::Scene&);
 template Real particle_mass<2>(const scene::Scene&, const AnyKernel<2>&, Real);
-template ParticleSet<2> make_fluid<2>(const scene::Scene&, Real, Real, FluidFields<2>&);
+template Phases make_phases<2>(const scene::Scene&, const AnyKernel<2>&);
+template ParticleSet<2> make_fluid<2>(const scene::Scene&, Real, Real, FluidFields<2>&, const Phases*);
 template ParticleSet<2> make_walls<2>(const scene::Scene&, Real, Real, WallFields<2>&);
 template void hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, Real, std::span<Real>);
 template Vector<2> gravity_at<2>(const scene::Scene&, double);
 template GridDomain<3> grid_domain<3>(const scene::Scene&);
 template Real particle_mass<3>(const scene::Scene&, const AnyKernel<3>&, Real);
-template ParticleSet<3> make_fluid<3>(const scene::Scene&, Real, Real, FluidFields<3>&);
+template Phases make_phases<3>(const scene::Scene&, const AnyKernel<3>&);
+template ParticleSet<3> make_fluid<3>(const scene::Scene&, Real, Real, FluidFields<3>&, const Phases*);
 template ParticleSet<3> make_walls<3>(const scene::Scene&, Real, Real, WallFields<3>&);
 template void hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, Real, std::span<Real>);
 template Vector<3> gravity_at<3>(const scene::Scene&, double);

@@ -13,6 +13,7 @@
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/phases.hpp"
 #include "tide/solvers/wcsph.hpp"
 
 namespace tide::setup {
@@ -20,6 +21,9 @@ namespace tide::setup {
 /// The scene's one fluid material; std::invalid_argument when it has none, or several fluids
 /// use different ones.
 const scene::Material& single_material(const scene::Scene& scene);
+
+/// The material of the first fluid block: the reference of a multiphase scene (walls, reports).
+const scene::Material& reference_material(const scene::Scene& scene);
 
 /// c0: the material's sound_speed, else 10 × its max_speed (Monaghan 1994: Mach 0.1).
 Real reference_sound_speed(const scene::Material& material);
@@ -31,10 +35,17 @@ GridDomain<D> grid_domain(const scene::Scene& scene);
 template <int D>
 Real particle_mass(const scene::Scene& scene, const AnyKernel<D>& kernel, Real rest_density);
 
-/// Fluid particles sampled from the scene, with the fields every scheme uses (FluidFields'
-/// optional slots left unset) and density ρ0.
+/// Per-material constants of a multiphase scene; std::invalid_argument names a fluid material
+/// without a positive sound_speed or max_speed.
 template <int D>
-ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_density, FluidFields<D>& fields);
+Phases make_phases(const scene::Scene& scene, const AnyKernel<D>& kernel);
+
+/// Fluid particles sampled from the scene, with the fields every scheme uses (FluidFields'
+/// optional slots left unset) and density ρ0. With `phases`, also the phase index, and mass and
+/// density from each particle's phase.
+template <int D>
+ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_density, FluidFields<D>& fields,
+                          const Phases* phases = nullptr);
 
 /// Wall particles sampled from the scene with the fields of WallFields (a surface velocity only
 /// when some obstacle moves), density ρ0 and pressure zero.

@@ -32,8 +32,12 @@ StateMaxima check_fluid_state(const ParticleSet<D>& fluid, const FluidFields<D>&
   const auto a = fluid[f.acceleration];
   const auto density = fluid[f.density];
   const Real max_speed2 = limits.max_speed * limits.max_speed;
+  const bool per_phase = !limits.phase.empty();
+  const auto checked_density = [&](std::size_t i) {
+    return per_phase ? density[i] * limits.inverse_rest_density[limits.phase[i]] : density[i];
+  };
   auto out_of_bounds = [&](std::size_t i, Real speed2) {
-    const Real rho = density[i];
+    const Real rho = checked_density(i);
     return !std::isfinite(x[i].squaredNorm() + speed2 + a[i].squaredNorm() + rho) || rho > limits.max_density ||
            rho < limits.min_density || speed2 > max_speed2;
   };
@@ -57,8 +61,10 @@ StateMaxima check_fluid_state(const ParticleSet<D>& fluid, const FluidFields<D>&
     throw InstabilityError(id, "velocity", static_cast<double>(v[i].norm()), step, time, "not finite", note);
   if (!std::isfinite(a[i].squaredNorm()))
     throw InstabilityError(id, "acceleration", static_cast<double>(a[i].norm()), step, time, "not finite", note);
-  if (!std::isfinite(density[i]) || density[i] > limits.max_density || density[i] < limits.min_density)
-    throw InstabilityError(id, "density", static_cast<double>(density[i]), step, time, limits.density_band, note);
+  const Real rho = checked_density(i);
+  if (!std::isfinite(rho) || rho > limits.max_density || rho < limits.min_density)
+    throw InstabilityError(id, per_phase ? "density / rest density" : "density", static_cast<double>(rho), step, time,
+                           limits.density_band, note);
   throw InstabilityError(id, "speed", static_cast<double>(v[i].norm()), step, time, limits.speed_bound, note);
 }
 

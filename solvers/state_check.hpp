@@ -5,7 +5,9 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "tide/core/particle_set.hpp"
 #include "tide/solvers/particle_fields.hpp"
@@ -19,6 +21,9 @@ struct StateLimits {
   Real max_speed = 0;
   std::string speed_bound;            // the speed bound in words, for the message
   std::function<std::string()> note;  // when set, a sentence added to the message (asked only on failure)
+  // Several fluids: the density bounds are on ρ_i / ρ0 of the particle's phase.
+  std::span<const Index> phase;
+  std::vector<Real> inverse_rest_density;  // by phase
 };
 
 struct StateMaxima {

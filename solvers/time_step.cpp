@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace tide {
 
@@ -16,6 +17,8 @@ std::string_view time_step_limit_name(TimeStepLimit limit) {
       return "viscous";
     case TimeStepLimit::force:
       return "force";
+    case TimeStepLimit::capillary:
+      return "capillary";
   }
   return "unknown";
 }
@@ -33,7 +36,14 @@ TimeStep choose_time_step(const TimeStepRule& rule, Real max_speed, Real max_acc
     const Real force = rule.force_number * std::sqrt(h / max_acceleration);
     if (force < step.dt) step = {force, TimeStepLimit::force};
   }
+  if (rule.capillary_limit > 0 && rule.capillary_limit < step.dt)
+    step = {rule.capillary_limit, TimeStepLimit::capillary};
   return step;
+}
+
+Real capillary_time_step(Real lightest_density, Real smoothing_length, Real coefficient) {
+  const Real h = smoothing_length;
+  return Real(0.25) * std::sqrt(lightest_density * h * h * h / (2 * std::numbers::pi_v<Real> * coefficient));
 }
 
 TimeStepLimit TimeStepTally::most_frequent() const {

@@ -8,15 +8,18 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 
 #include "passes/continuity.hpp"
 #include "passes/density_summation.hpp"
 #include "passes/momentum.hpp"
 #include "passes/particle_shifting.hpp"
+#include "passes/surface_tension.hpp"
 #include "passes/wall_state.hpp"
 #include "simulation_setup.hpp"
 #include "state_check.hpp"
+#include "surface_tension_setup.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/particle_sampling.hpp"
 
@@ -30,15 +33,28 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
     : scene_(scene),
       smoothing_length_(static_cast<Real>(scene.smoothing_ratio * scene.particle_spacing)),
       kernel_(make_kernel<D>(scene.kernel, smoothing_length_)),
-      eos_(scene.solver.equation_of_state, static_cast<Real>(setup::single_material(scene).rest_density),
-           setup::reference_sound_speed(setup::single_material(scene)), static_cast<Real>(scene.solver.tait_exponent),
-           static_cast<Real>(scene.solver.background_pressure)),
-      kinematic_viscosity_(static_cast<Real>(setup::single_material(scene).kinematic_viscosity)),
+      eos_(scene.solver.equation_of_state, static_cast<Real>(setup::reference_material(scene).rest_density),
+           setup::reference_sound_speed(setup::reference_material(scene)),
+           static_cast<Real>(scene.solver.tait_exponent), static_cast<Real>(scene.solver.background_pressure)),
+      kinematic_viscosity_(static_cast<Real>(setup::reference_material(scene).kinematic_viscosity)),
       neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_) {
   if (!(eos_.sound_speed() > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
+  if (scene::fluid_material_count(scene) > 1) {
+    if (scene.solver.density != scene::DensityMethod::summation || scene.solver.artificial_stress > 0)
+      throw std::invalid_argument(scene.source +
+                                  ": several fluid materials need summation density and no artificial stress");
+    phases_ = setup::make_phases<D>(scene, kernel_);
+  }
   const Real particle_mass = setup::particle_mass<D>(scene, kernel_, eos_.rest_density());
-  fluid_ = setup::make_fluid<D>(scene, particle_mass, eos_.rest_density(), fluid_fields_);
+  fluid_ = setup::make_fluid<D>(scene, particle_mass, eos_.rest_density(), fluid_fields_, phases());
+  const scene::SurfaceTensionModel tension_model = scene.solver.surface_tension.model;
+  if (tension_model != scene::SurfaceTensionModel::none) {
+    tension_ = std::make_unique<const passes::SurfaceTensionSettings>(setup::surface_tension_settings<D>(
+        scene, kernel_, phases(), eos_.rest_density(), particle_mass / eos_.rest_density()));
+    if (tension_model != scene::SurfaceTensionModel::pairwise)
+      fluid_fields_.colour_gradient = fluid_.add_vector("colour_gradient");
+  }
   if (scene.solver.shifting != scene::Shifting::none) {
     fluid_fields_.shift = fluid_.add_vector("shift");
     fluid_fields_.position_divergence = fluid_.add_scalar("position_divergence");
@@ -50,18 +66,55 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   walls_ = setup::make_walls<D>(scene, particle_mass, eos_.rest_density(), wall_fields_);
 
   time_step_rule_.smoothing_length = smoothing_length_;
-  time_step_rule_.sound_speed = eos_.sound_speed();
-  time_step_rule_.kinematic_viscosity =
-      scene.solver.viscosity == scene::ViscosityModel::laminar ? kinematic_viscosity_ : Real(0);
+  time_step_rule_.sound_speed = phases_ ? phases_->fastest_sound : eos_.sound_speed();
+  time_step_rule_.kinematic_viscosity = scene.solver.viscosity == scene::ViscosityModel::laminar
+                                            ? (phases_ ? phases_->largest_kinematic_viscosity : kinematic_viscosity_)
+                                            : Real(0);
+  if (tension_model == scene::SurfaceTensionModel::csf || tension_model == scene::SurfaceTensionModel::pairwise) {
+    time_step_rule_.capillary_limit = capillary_time_step(phases_ ? phases_->lightest_density : eos_.rest_density(),
+                                                          smoothing_length_, tension_->coefficient);
+  }
   time_step_rule_.cfl = static_cast<Real>(scene.solver.cfl);
   time_step_rule_.viscous_number = static_cast<Real>(scene.solver.viscous_number);
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
   time_ = scene.time.start;
 
+  build_pipeline();
   neighbors_.set_walls(walls_);
   neighbors_.update_fluid(fluid_, walls_);
   compute_interactions(setup::gravity_at<D>(scene_, time_));
   check_state();
+}
+
+template <int D>
+Wcsph<D>::~Wcsph() = default;
+
+template <int D>
+void Wcsph<D>::build_pipeline() {
+  const scene::Solver& solver = scene_.solver;
+  pipeline_ = {"kick_drift", "neighbor_search"};
+  if (solver.density == scene::DensityMethod::continuity) {
+    pipeline_.insert(pipeline_.end(), {"continuity", "equation_of_state"});
+  } else {
+    pipeline_.push_back(phases_ ? "number_density" : "density_summation");
+  }
+  pipeline_.insert(pipeline_.end(), {"wall_state", "momentum"});
+  switch (solver.surface_tension.model) {
+    case scene::SurfaceTensionModel::none:
+      break;
+    case scene::SurfaceTensionModel::csf:
+      pipeline_.insert(pipeline_.end(), {"colour_gradient", "continuum_surface_force"});
+      break;
+    case scene::SurfaceTensionModel::akinci:
+      pipeline_.insert(pipeline_.end(), {"akinci_normal", "akinci_surface_force"});
+      break;
+    case scene::SurfaceTensionModel::pairwise:
+      pipeline_.push_back("pairwise_surface_force");
+      break;
+  }
+  pipeline_.insert(pipeline_.end(), {"kick", "state_check"});
+  if (solver.shifting != scene::Shifting::none)
+    pipeline_.insert(pipeline_.end(), {"position_divergence", "particle_shifting"});
 }
 
 template <int D>
@@ -88,16 +141,33 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
       static_cast<Real>(scene_.solver.artificial_stress),
       std::visit([&](const auto& kernel) { return 1 / kernel.value(static_cast<Real>(scene_.particle_spacing)); },
                  kernel_)};
-  const passes::WallPressureExtrapolation<D> wall_pressure{&eos_, gravity, scene_.solver.clamp_negative_pressure};
+  // Several fluids: the walls keep ρ0 (their volume enters the momentum pass, not their density).
+  const passes::WallPressureExtrapolation<D> wall_pressure{phases_ ? nullptr : &eos_, gravity,
+                                                           scene_.solver.clamp_negative_pressure};
   auto pressure = fluid_[fluid_fields_.pressure];
-  const auto set_pressure = [&, clamp = scene_.solver.clamp_negative_pressure](std::size_t i, Real rho) {
+  const bool clamp = scene_.solver.clamp_negative_pressure;
+  const auto set_pressure = [&](std::size_t i, Real rho) {
     const Real p = eos_.pressure(rho);
+    pressure[i] = clamp ? std::max(p, Real(0)) : p;
+  };
+  std::vector<Real> dynamic_viscosity;
+  passes::MultiphaseTerms multiphase;
+  if (phases_) {
+    for (const Phase& phase : phases_->table) dynamic_viscosity.push_back(phase.dynamic_viscosity);
+    multiphase = {std::as_const(fluid_)[fluid_fields_.phase], dynamic_viscosity,
+                  walls_.empty() ? Real(0) : walls_[wall_fields_.mass][0] / eos_.rest_density()};
+  }
+  const auto set_phase_pressure = [&, phase = multiphase.phase](std::size_t i, Real rho) {
+    const Real p = phases_->table[phase[i]].eos.pressure(rho);
     pressure[i] = clamp ? std::max(p, Real(0)) : p;
   };
   auto clock = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& kernel) {
-        if (scene_.solver.density == scene::DensityMethod::summation) {
+        if (phases_) {
+          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
+                                             set_phase_pressure);
+        } else if (scene_.solver.density == scene::DensityMethod::summation) {
           passes::density_summation<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_, set_pressure);
         } else {
           const auto density = std::as_const(fluid_)[fluid_fields_.density];
@@ -107,8 +177,44 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
         passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, &wall_pressure);
         lap(clock, pass_times_.wall_state);
         passes::fluid_acceleration<D>(kernel, viscosity, stress, fluid_, fluid_fields_, neighbors_, walls_,
-                                      wall_fields_, gravity);
+                                      wall_fields_, gravity, phases_ ? &multiphase : nullptr);
         lap(clock, pass_times_.momentum);
+      },
+      kernel_);
+  if (tension_) {
+    add_surface_tension();
+    lap(clock, pass_times_.surface_tension);
+  }
+}
+
+template <int D>
+Real Wcsph<D>::pair_strength(Index a, Index b) const {
+  if (!tension_ || tension_->pair_strength.empty()) return 0;
+  return tension_->pair_strength[a * tension_->phase_count + b];
+}
+
+template <int D>
+void Wcsph<D>::add_surface_tension() {
+  const std::span<const Index> phase = phases_ ? std::as_const(fluid_)[fluid_fields_.phase] : std::span<const Index>{};
+  const passes::SurfaceTensionSettings& s = *tension_;
+  std::visit(
+      [&](const auto& kernel) {
+        switch (scene_.solver.surface_tension.model) {
+          case scene::SurfaceTensionModel::none:
+            break;
+          case scene::SurfaceTensionModel::csf:
+            passes::colour_gradient<D>(kernel, s, fluid_, fluid_fields_, phase, neighbors_);
+            passes::continuum_surface_force<D>(kernel, s, fluid_, fluid_fields_, neighbors_);
+            break;
+          case scene::SurfaceTensionModel::akinci:
+            passes::akinci_normal<D>(kernel, s, fluid_, fluid_fields_, phase, neighbors_);
+            passes::akinci_surface_force<D>(kernel, s, fluid_, fluid_fields_, phase, neighbors_, walls_, wall_fields_);
+            break;
+          case scene::SurfaceTensionModel::pairwise:
+            passes::pairwise_surface_force<D>(kernel, s, fluid_, fluid_fields_, phase, neighbors_, walls_,
+                                              wall_fields_);
+            break;
+        }
       },
       kernel_);
 }
@@ -209,6 +315,14 @@ void Wcsph<D>::check_state() {
   limits.speed_bound = "faster than " + format_number(scene_.solver.max_mach_number) +
                        " x c0 = " + format_number(limits.max_speed) + " m/s, solver.max_mach_number";
   limits.note = [this] { return time_step_note(); };
+  if (phases_) {
+    // Each phase against its own rest density.
+    limits.min_density = limits.min_density / rho0;
+    limits.max_density = ratio;
+    limits.density_band = "rho/rho0 of its phase " + limits.density_band;
+    limits.phase = std::as_const(fluid_)[fluid_fields_.phase];
+    for (const Phase& phase : phases_->table) limits.inverse_rest_density.push_back(1 / phase.rest_density);
+  }
   const StateMaxima maxima = check_fluid_state<D>(fluid_, fluid_fields_, limits, step_count_, time_);
   max_speed_ = maxima.speed;
   max_acceleration_ = maxima.acceleration;

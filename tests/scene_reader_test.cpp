@@ -25,7 +25,7 @@ json full_2d_scene() {
     "materials": [{"name": "water", "rest_density": 998, "kinematic_viscosity": 1e-6, "max_speed": 3.1},
                   {"name": "oil", "rest_density": 900, "sound_speed": 40}],
     "fluid": [{"material": "water", "box": {"min": [0, 0], "max": [0.4, 0.8]}},
-              {"material": "oil", "ball": {"centre": [1.0, 0.5], "radius": 0.1}}],
+              {"material": "water", "ball": {"centre": [1.0, 0.5], "radius": 0.1}}],
     "walls": {"layers": 4, "slip": "free_slip", "container": {"min": [0, 0], "max": [1.6, 1.2], "open_top": false},
               "obstacles": [{"box": {"min": [0.8, 0], "max": [0.9, 0.1]}},
                             {"ball": {"centre": [1.2, 0.1], "radius": 0.05}},
@@ -122,7 +122,7 @@ TEST(SceneReader, Full2DSceneRoundTrips) {
   const auto& box = std::get<scene::Box>(s.fluid[0].shape);
   EXPECT_EQ(box.min, vec(0, 0));
   EXPECT_EQ(box.max, vec(0.4, 0.8));
-  EXPECT_EQ(s.fluid[1].material, 1u);
+  EXPECT_EQ(s.fluid[1].material, 0u);  // one fluid material: oil is listed but unused
   const auto& ball = std::get<scene::Ball>(s.fluid[1].shape);
   EXPECT_EQ(ball.centre, vec(1.0, 0.5));
   EXPECT_EQ(ball.radius, 0.1);
@@ -304,7 +304,8 @@ TEST(SceneReader, ReadsTheIncompressibleSchemesAndTheirSolverKeys) {
 TEST(SceneReader, ReadsARigidRotation) {
   const json document =
       with(full_2d_scene(), "/fluid/0/velocity", {{"rotation", {{"centre", {0.2, 0.4}}, {"angular_velocity", -1.5}}}});
-  const auto& rotation = std::get<scene::RigidRotation>(parse(document).fluid[0].velocity);
+  const scene::Scene s = parse(document);
+  const auto& rotation = std::get<scene::RigidRotation>(s.fluid[0].velocity);
   EXPECT_EQ(rotation.centre, vec(0.2, 0.4));
   EXPECT_EQ(rotation.angular_velocity, -1.5);
 }
@@ -342,6 +343,56 @@ TEST(SceneReaderRefuses, MalformedVelocities) {
                  "/fluid/0/velocity/rotation/centre", "an array of 2 numbers [x, y]");
   expect_refused(with(full_2d_scene(), "/walls/obstacles/0/velocity", {1, 0, 0}), "/walls/obstacles/0/velocity",
                  "an array of 2 numbers [x, y]");
+}
+
+/// Oil in water, two fluid materials: a multiphase scene with csf tension.
+json two_fluid_scene() {
+  json document = full_2d_scene();
+  document["fluid"][1]["material"] = "oil";
+  document["solver"] = json::parse(R"({"density": "summation",
+                                       "surface_tension": {"model": "csf", "coefficient": 0.03}})");
+  return document;
+}
+
+TEST(SceneReader, ReadsSurfaceTensionModels) {
+  scene::Scene s = parse(two_fluid_scene());
+  EXPECT_EQ(s.fluid[1].material, 1u);
+  EXPECT_EQ(scene::fluid_material_count(s), 2u);
+  EXPECT_EQ(s.solver.surface_tension.model, scene::SurfaceTensionModel::csf);
+  EXPECT_EQ(s.solver.surface_tension.coefficient, 0.03);
+  s = parse(with(full_2d_scene(), "/solver/surface_tension",
+                 {{"model", "pairwise"}, {"coefficient", 0.07}, {"contact_angle", 30}}));
+  EXPECT_EQ(s.solver.surface_tension.model, scene::SurfaceTensionModel::pairwise);
+  EXPECT_EQ(s.solver.surface_tension.contact_angle, 30);
+  s = parse(
+      with(full_2d_scene(), "/solver/surface_tension", {{"model", "akinci"}, {"coefficient", 2}, {"adhesion", 1}}));
+  EXPECT_EQ(s.solver.surface_tension.model, scene::SurfaceTensionModel::akinci);
+  EXPECT_EQ(s.solver.surface_tension.adhesion, 1);
+  EXPECT_EQ(parse(full_2d_scene()).solver.surface_tension.model, scene::SurfaceTensionModel::none);
+}
+
+TEST(SceneReaderRefuses, BadSurfaceTensionAndMultiphaseSettings) {
+  const std::string tension = "/solver/surface_tension";
+  expect_refused(with(two_fluid_scene(), tension + "/model", "marangoni"), tension + "/model",
+                 "one of \"csf\", \"akinci\", \"pairwise\"");
+  expect_refused(without(two_fluid_scene(), tension + "/coefficient"), tension + "/coefficient", "a number > 0");
+  expect_refused(with(two_fluid_scene(), tension + "/coefficient", -1), tension + "/coefficient", "a number > 0");
+  expect_refused(with(two_fluid_scene(), tension + "/unknown", 1), tension + "/unknown", "one of the keys");
+  expect_refused(with(two_fluid_scene(), tension + "/contact_angle", 30), tension + "/contact_angle",
+                 "only the pairwise model");
+  expect_refused(with(two_fluid_scene(), tension + "/adhesion", 1), tension + "/adhesion", "only the akinci model");
+  expect_refused(with(with(two_fluid_scene(), tension + "/model", "pairwise"), tension + "/contact_angle", 180),
+                 tension + "/contact_angle", "an angle in degrees in (0, 180)");
+  expect_refused(with(full_2d_scene(), tension, {{"model", "csf"}, {"coefficient", 1}}), tension + "/model",
+                 "\"csf\" needs exactly two fluid materials");
+  expect_refused(with(two_fluid_scene(), "/solver/density", "continuity"), "/solver/density",
+                 "\"summation\" for a scene with several fluid materials");
+  expect_refused(with(two_fluid_scene(), "/solver/scheme", "dfsph"), "/solver/scheme",
+                 "\"wcsph\" for a scene with several fluid materials");
+  expect_refused(with(two_fluid_scene(), "/solver/artificial_stress", 0.2), "/solver/artificial_stress",
+                 "0 for a scene with several fluid materials");
+  expect_refused(with(full_2d_scene(), "/output/fields", {"position", "phase"}), "/output/fields/1",
+                 "\"phase\" needs several fluid materials");
 }
 
 TEST(SceneReader, AcceptsComments) {

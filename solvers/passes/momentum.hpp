@@ -3,10 +3,7 @@
 // Acceleration of every fluid particle: pressure, viscosity, artificial stress and body force in
 // one gather pass.
 
-#include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
 #include <span>
 
 #include "tide/core/parallel.hpp"
@@ -46,36 +43,24 @@ struct ArtificialStressSettings {
 
 namespace detail {
 
-// ∇W_ij = F(r) x_ij for every radial kernel: F read through the kernel's own gradient, so a pass
-// over arrays of pairs needs no kernel-specific code (the unit vector's zero components fold away).
-template <int D, class Kernel>
-inline Real gradient_factor(const Kernel& kernel, Real r) {
-  return kernel.gradient(Vector<D>::Unit(0), r)[0];
-}
-
-// The viscous acceleration on i from one neighbour j is c_∇ ∇W_ij + c_v v_ij; these are c_∇, c_v.
+// Viscous acceleration on i from one neighbour j.
 // Artificial: Monaghan 1992, eq. 4.1–4.2: −m_j Π_ij ∇W_ij, Π_ij = (−α c μ + β μ²)/ρ̄_ij when
-//   v_ij·x_ij < 0, μ = h v_ij·x_ij / (r² + 0.01 h²). Approaching pairs only, without a branch
-//   (v·x < 0 for about half the pairs, unpredictably): a receding pair gets μ = 0 and so Π = 0.
-// Laminar: Morris, Fox & Zhu 1997, eq. 8: m_j (μ_i + μ_j) x_ij·∇W_ij / (ρ_i ρ_j (r² + 0.01 h²)) v_ij,
-//   with x_ij·∇W_ij = F r² for ∇W_ij = F x_ij.
-struct ViscousCoefficients {
-  Real along_gradient = 0;
-  Real along_v = 0;
-};
-
-template <scene::ViscosityModel Model>
-inline ViscousCoefficients viscous_coefficients(const ViscositySettings& s, Real m_j, Real rho_i, Real rho_j,
-                                                Real v_dot_x, Real r2, Real gradient) {
+//   v_ij·x_ij < 0, μ = h v_ij·x_ij / (r² + 0.01 h²).
+// Laminar: Morris, Fox & Zhu 1997, eq. 8: m_j (μ_i + μ_j) x_ij·∇W_ij / (ρ_i ρ_j (r² + 0.01 h²)) v_ij.
+template <int D, scene::ViscosityModel Model>
+inline Vector<D> viscous_term(const ViscositySettings& s, Real m_j, Real rho_i, Real rho_j, const Vector<D>& v_ij,
+                              const Vector<D>& x_ij, Real r2, const Vector<D>& grad_w) {
   const Real h = s.smoothing_length;
   const Real regularised_r2 = r2 + Real(0.01) * h * h;
   if constexpr (Model == scene::ViscosityModel::artificial) {
-    const Real mu = h * std::min(v_dot_x, Real(0)) / regularised_r2;
+    const Real v_dot_x = v_ij.dot(x_ij);
+    if (v_dot_x >= 0) return Vector<D>::Zero();
+    const Real mu = h * v_dot_x / regularised_r2;
     const Real pi = (-s.alpha * s.sound_speed * mu + s.beta * mu * mu) / (Real(0.5) * (rho_i + rho_j));
-    return {-m_j * pi, 0};
+    return (-m_j * pi) * grad_w;
   } else {
     const Real dynamic_sum = s.kinematic_viscosity * (rho_i + rho_j);
-    return {0, m_j * dynamic_sum * (gradient * r2) / (rho_i * rho_j * regularised_r2)};
+    return (m_j * dynamic_sum * x_ij.dot(grad_w) / (rho_i * rho_j * regularised_r2)) * v_ij;
   }
 }
 
@@ -95,71 +80,31 @@ inline Real artificial_stress_weight(const Kernel& kernel, const ArtificialStres
   return f2 * f2;
 }
 
-// The particle-i side of the momentum pass and the terms of one batch of neighbours (fluid or
-// wall, given as their fields): first every pair's coefficients in a loop without branches, then
-// the sums in neighbour order.
-template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, class Kernel>
-struct MomentumGather {
-  const Kernel& kernel;
-  const ViscositySettings& settings;
-  const ArtificialStressSettings& stress;
-  Vector<D> v_i;
-  Real rho_i;
-  Real p_over_rho2_i;
-  Real stress_i;
-
-  // skip: the index of particle i among these neighbours (its self pair), or none. Viscous: with
-  // the viscous terms (a template flag, so the loop has no branch to vectorise around).
-  template <bool Viscous, class Velocity>
-  void add(const NeighborBatch<D>& b, std::span<const Real> mass, std::span<const Real> density,
-           std::span<const Real> pressure, const Velocity& v, Index skip, Vector<D>& a) const {
-    std::array<Real, batch_size> factor;  // ∇W_ij = F x_ij
-    std::array<Real, batch_size> pressure_coefficient;
-    std::array<Real, batch_size> along_gradient;
-    std::array<Real, batch_size> along_v;
-    for (Index k = 0; k < b.count; ++k) {
-      const Index j = b.j[k];
-      const Real rho_j = density[j];
-      const Real r = std::sqrt(b.r2[k]);
-      const Real gradient = gradient_factor<D>(kernel, r);
-      Real v_dot_x = 0;
-      for (int d = 0; d < D; ++d) v_dot_x += (v_i[d] - v.component[d][j]) * b.x[d][k];
-      Real p = 0;
-      if constexpr (WithPressure) {
-        const Real p_over_rho2_j = pressure[j] / (rho_j * rho_j);
-        Real term = p_over_rho2_i + p_over_rho2_j;
-        if constexpr (ArtificialStress)
-          term += (stress_i + artificial_stress_share(stress.epsilon, p_over_rho2_j)) *
-                  artificial_stress_weight(kernel, stress, r);
-        p = mass[j] * term;
-      }
-      ViscousCoefficients c;
-      if constexpr (Viscous)
-        c = viscous_coefficients<Model>(settings, mass[j], rho_i, rho_j, v_dot_x, b.r2[k], gradient);
-      const bool counted = j != skip;
-      factor[k] = gradient;
-      pressure_coefficient[k] = counted ? p : Real(0);
-      along_gradient[k] = counted ? c.along_gradient : Real(0);
-      along_v[k] = counted ? c.along_v : Real(0);
-    }
-    // In neighbour order, each term rounded as the per-pair form a −= p ∇W, a += viscous does.
-    for (Index k = 0; k < b.count; ++k) {
-      for (int d = 0; d < D; ++d) {
-        const Real grad_w = factor[k] * b.x[d][k];
-        if constexpr (WithPressure) a[d] -= pressure_coefficient[k] * grad_w;
-        if constexpr (Viscous) {
-          if constexpr (Model == scene::ViscosityModel::artificial) {
-            a[d] += along_gradient[k] * grad_w;
-          } else {
-            a[d] += along_v[k] * (v_i[d] - v.component[d][b.j[k]]);
-          }
-        }
-      }
-    }
-  }
-};
+// Laminar viscous acceleration on i from one neighbour j in the number-density formulation
+// (Hu & Adams 2006, eq. 11): (1/m_i) η̄_ij (V_i² + V_j²) x_ij·∇W_ij / (r² + 0.01 h²) v_ij, with the
+// inter-particle viscosity η̄_ij = 2 η_i η_j / (η_i + η_j) that keeps the shear stress continuous
+// across an interface.
+template <int D>
+inline Vector<D> multiphase_viscous_term(Real smoothing_length, Real inverse_mass_i, Real eta_i, Real eta_j,
+                                         Real volume_sum, const Vector<D>& v_ij, const Vector<D>& x_ij, Real r2,
+                                         const Vector<D>& grad_w) {
+  const Real eta_sum = eta_i + eta_j;
+  if (!(eta_sum > 0)) return Vector<D>::Zero();
+  const Real eta_ij = 2 * eta_i * eta_j / eta_sum;
+  const Real regularised_r2 = r2 + Real(0.01) * smoothing_length * smoothing_length;
+  return (inverse_mass_i * eta_ij * volume_sum * x_ij.dot(grad_w) / regularised_r2) * v_ij;
+}
 
 }  // namespace detail
+
+/// What the momentum pass needs for several fluids: each particle's phase, each phase's dynamic
+/// viscosity, and the volume of a wall particle (walls fill the lattice: V = Δx^D up to the
+/// kernel's discretisation, the same 1/Σ_k W(|k|Δx) every phase's mass is set from).
+struct MultiphaseTerms {
+  std::span<const Index> phase;
+  std::span<const Real> dynamic_viscosity;  // by phase
+  Real wall_volume = 0;
+};
 
 /// a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3) + viscous terms + g,
 /// summed over fluid and wall neighbours (walls with their extrapolated p, ρ and velocity).
@@ -167,11 +112,17 @@ struct MomentumGather {
 /// repulsion between particles in tension that stops them clumping in pairs (Monaghan 2000,
 /// J. Comput. Phys. 159, the artificial pressure added to the equation of motion). Without
 /// `WithPressure`, the non-pressure part only: what an incompressible scheme integrates before
-/// its pressure solve.
-template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, class Kernel>
-void momentum(const Kernel& kernel, const ViscositySettings& settings, const ArtificialStressSettings& stress,
-              ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
-              const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity) {
+/// its pressure solve. With `Multiphase`, the number-density form of Hu & Adams 2006 (eq. 8):
+/// a_i = −(1/m_i) Σ_j (p_i V_i² + p_j V_j²) ∇W_ij with V = m/ρ, which stays free of spurious
+/// interface forces at any density ratio, and the laminar viscosity of
+/// detail::multiphase_viscous_term; for particles of one mass it is the single-phase form.
+template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, bool Multiphase = false,
+          class Kernel>
+void momentum(const Kernel& kernel, const ViscositySettings& settings,
+              [[maybe_unused]] const ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
+              const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
+              const Vector<D>& gravity, [[maybe_unused]] const MultiphaseTerms* phases = nullptr) {
+  static_assert(!(Multiphase && ArtificialStress), "the artificial stress is not compiled for several fluids");
   const auto x = std::as_const(fluid)[f.position];
   const auto v = std::as_const(fluid)[f.velocity];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -183,41 +134,100 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings, const Art
   const auto wall_density = walls[w.density];
   const auto wall_pressure = walls[w.pressure];
   auto acceleration = fluid[f.acceleration];
-  const bool walls_needed = WithPressure || settings.walls_viscous;
-  constexpr Index none = std::numeric_limits<Index>::max();
   for_each_particle(fluid.size(), [&](std::size_t i) {
+    const Vector<D> v_i = v[i];
     const Real rho_i = density[i];
     const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
-    const Real stress_i = ArtificialStress ? detail::artificial_stress_share(stress.epsilon, p_over_rho2_i) : Real(0);
-    const detail::MomentumGather<D, Model, WithPressure, ArtificialStress, Kernel> gather{
-        kernel, settings, stress, v[i], rho_i, p_over_rho2_i, stress_i};
+    [[maybe_unused]] Real stress_i = 0;
+    if constexpr (ArtificialStress) stress_i = detail::artificial_stress_share(stress.epsilon, p_over_rho2_i);
+    // The pressure term of one pair, with the artificial stress when it is compiled in.
+    const auto pressure_term = [&](Real p_over_rho2_j, Real r) {
+      Real term = p_over_rho2_i + p_over_rho2_j;
+      if constexpr (ArtificialStress) {
+        const Real stress_j = detail::artificial_stress_share(stress.epsilon, p_over_rho2_j);
+        term += (stress_i + stress_j) * detail::artificial_stress_weight(kernel, stress, r);
+      }
+      return term;
+    };
     Vector<D> a = gravity;
-    neighbors.for_each_fluid_batch(i, x, [&](const NeighborBatch<D>& b) {
-      gather.template add<true>(b, mass, density, pressure, v, static_cast<Index>(i), a);
-    });
-    if (walls_needed) {
-      neighbors.for_each_wall_batch(i, x, wall_x, [&](const NeighborBatch<D>& b) {
-        if (settings.walls_viscous) {
-          gather.template add<true>(b, wall_mass, wall_density, wall_pressure, wall_v, none, a);
-        } else {
-          gather.template add<false>(b, wall_mass, wall_density, wall_pressure, wall_v, none, a);
-        }
-      });
+    [[maybe_unused]] Real inverse_mass_i = 0, volume_i = 0, eta_i = 0;
+    if constexpr (Multiphase) {
+      inverse_mass_i = 1 / mass[i];
+      volume_i = mass[i] / rho_i;
+      eta_i = phases->dynamic_viscosity[phases->phase[i]];
     }
+    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
+      if (j == i) return;
+      const Real rho_j = density[j];
+      const Real r = std::sqrt(r2);
+      const Vector<D> grad_w = kernel.gradient(x_ij, r);
+      if constexpr (Multiphase) {
+        const Real volume_j = mass[j] / rho_j;
+        const Real vi2 = volume_i * volume_i, vj2 = volume_j * volume_j;
+        if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + pressure[j] * vj2)) * grad_w;
+        if constexpr (Model == scene::ViscosityModel::laminar) {
+          a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i,
+                                                  phases->dynamic_viscosity[phases->phase[j]], vi2 + vj2, v_i - v[j],
+                                                  x_ij, r2, grad_w);
+        } else {
+          a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
+        }
+      } else {
+        if constexpr (WithPressure) a -= (mass[j] * pressure_term(pressure[j] / (rho_j * rho_j), r)) * grad_w;
+        a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
+      }
+    });
+    if (!WithPressure && !settings.walls_viscous) {
+      acceleration.set(i, a);
+      return;
+    }
+    neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
+      const Real rho_b = wall_density[b];
+      const Real r = std::sqrt(r2);
+      const Vector<D> grad_w = kernel.gradient(x_ib, r);
+      if constexpr (Multiphase) {
+        // The wall takes the viscosity of the fluid particle beside it.
+        const Real vb2 = phases->wall_volume * phases->wall_volume;
+        const Real vi2 = volume_i * volume_i;
+        if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + wall_pressure[b] * vb2)) * grad_w;
+        if (!settings.walls_viscous) return;
+        if constexpr (Model == scene::ViscosityModel::laminar) {
+          a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i, eta_i, vi2 + vb2,
+                                                  v_i - wall_v[b], x_ib, r2, grad_w);
+        } else {
+          a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
+        }
+      } else {
+        if constexpr (WithPressure) a -= (wall_mass[b] * pressure_term(wall_pressure[b] / (rho_b * rho_b), r)) * grad_w;
+        if (settings.walls_viscous)
+          a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
+      }
+    });
     acceleration.set(i, a);
   });
 }
 
-/// momentum() compiled for the viscosity model of `settings` and for artificial stress on or off,
-/// picked once per pass outside the particle loop: a scene without artificial stress runs a pass
-/// without it.
+/// momentum() compiled for the viscosity model of `settings`, for artificial stress on or off and
+/// for one fluid or several (`phases` set), picked once per pass outside the particle loop: a
+/// scene without artificial stress or a second fluid runs a pass without them.
 template <int D, bool WithPressure = true, class Kernel>
 void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, const ArtificialStressSettings& stress,
                         ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
-                        const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity) {
+                        const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity,
+                        const MultiphaseTerms* phases = nullptr) {
   const auto run = [&]<scene::ViscosityModel Model, bool Stress>() {
     momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, neighbors, walls, w, gravity);
   };
+  if (phases) {
+    if (settings.model == scene::ViscosityModel::artificial) {
+      momentum<D, scene::ViscosityModel::artificial, WithPressure, false, true>(kernel, settings, stress, fluid, f,
+                                                                                neighbors, walls, w, gravity, phases);
+    } else {
+      momentum<D, scene::ViscosityModel::laminar, WithPressure, false, true>(kernel, settings, stress, fluid, f,
+                                                                             neighbors, walls, w, gravity, phases);
+    }
+    return;
+  }
   const bool with_stress = WithPressure && stress.epsilon > 0;
   if (settings.model == scene::ViscosityModel::artificial) {
     with_stress ? run.template operator()<scene::ViscosityModel::artificial, WithPressure>()

@@ -81,6 +81,7 @@ Case poiseuille_case();
 Case couette_case();
 Case taylor_green_case();
 Case dam_break_2d_case();
+Case dam_break_3d_front_case();
 Case dam_break_buchner_case();
 Case dam_break_3d_case();
 Case lid_driven_cavity_case(int reynolds);

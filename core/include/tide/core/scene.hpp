@@ -127,6 +127,19 @@ enum class DensityMethod { summation, continuity };
 enum class ViscosityModel { artificial, laminar };
 enum class Shifting { none, fickian };
 
+/// Surface tension (docs/multiphase.md). csf: continuum surface force from the colour gradient
+/// of two fluids (Brackbill et al. 1992; Morris 2000). akinci: cohesion and surface-area
+/// minimisation with adhesion to walls (Akinci et al. 2013). pairwise: inter-particle forces
+/// whose fluid–wall strength sets the contact angle (Tartakovsky & Meakin 2005).
+enum class SurfaceTensionModel { none, csf, akinci, pairwise };
+
+struct SurfaceTension {
+  SurfaceTensionModel model = SurfaceTensionModel::none;
+  double coefficient = 0;     // σ in N/m (2D: N); akinci: Akinci's γ
+  double contact_angle = 90;  // pairwise: static angle in degrees, measured through the first material
+  double adhesion = 0;        // akinci: β of the wall adhesion
+};
+
 struct Solver {
   Scheme scheme = Scheme::wcsph;
   EquationOfState equation_of_state = EquationOfState::tait;
@@ -151,6 +164,7 @@ struct Solver {
   double max_divergence_error = 0.001;  // DFSPH divergence solve: mean error of Δt Dρ/Dt, as a share of ρ0
   int max_solver_iterations = 100;      // cap per pressure solve
   int max_failed_solves = 10;           // consecutive steps whose solve missed its threshold before the run stops
+  SurfaceTension surface_tension;
 };
 
 struct Time {
@@ -161,8 +175,8 @@ struct Time {
 
 /// The per-particle fields a scene may ask the output to write: the one list the scene reader
 /// checks names against and docs/scenes.md documents.
-inline constexpr std::array<std::string_view, 7> output_field_names{"position",     "velocity", "density", "pressure",
-                                                                    "acceleration", "mass",     "id"};
+inline constexpr std::array<std::string_view, 8> output_field_names{"position",     "velocity", "density", "pressure",
+                                                                    "acceleration", "mass",     "id",      "phase"};
 
 struct Output {
   std::vector<std::string> fields{"position", "velocity", "density", "pressure"};
@@ -195,5 +209,19 @@ struct Scene {
   Output output;
   std::vector<Probe> probes;
 };
+
+/// The number of distinct materials the fluid blocks use: more than one makes the scene
+/// multiphase (a phase index per particle, the number-density formulation).
+inline std::size_t fluid_material_count(const Scene& scene) {
+  std::vector<bool> used(scene.materials.size(), false);
+  std::size_t count = 0;
+  for (const FluidBlock& block : scene.fluid) {
+    if (block.material < used.size() && !used[block.material]) {
+      used[block.material] = true;
+      ++count;
+    }
+  }
+  return count;
+}
 
 }  // namespace tide::scene

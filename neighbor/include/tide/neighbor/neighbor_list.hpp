@@ -1,11 +1,9 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "tide/core/particle_set.hpp"
@@ -24,17 +22,6 @@ namespace tide {
 /// particles of a cell share its candidates, so one offset per cell locates every particle's
 /// bits. In 3D with cells of one support radius a particle has ~216 candidates for ~29
 /// neighbours: 32 bytes per particle against 116 for an index list.
-inline constexpr Index batch_size = 64;
-
-/// Up to `batch_size` neighbours of one particle as arrays (NeighborList::for_each_batch).
-template <int D>
-struct NeighborBatch {
-  Index count;
-  std::array<Index, batch_size> j;
-  std::array<std::array<Real, batch_size>, D> x;  // x_ij by component
-  std::array<Real, batch_size> r2;
-};
-
 template <int D>
 class NeighborList {
  public:
@@ -70,26 +57,6 @@ class NeighborList {
       }
       position += length;
     }
-  }
-
-  /// The same neighbours, in the same order, handed over in batches of up to `batch_size`:
-  /// f(const NeighborBatch<D>&) sees plain arrays of j, x_ij and r², so a pass can evaluate its
-  /// pair terms in a loop the compiler vectorises, then sum them in order.
-  template <class F>
-  void for_each_batch(std::size_t i, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x,
-                      F&& f) const {
-    NeighborBatch<D> batch;
-    batch.count = 0;
-    for_each(i, query_x, source_x, [&](Index j, const Vector<D>& xij, Real r2) {
-      batch.j[batch.count] = j;
-      for (int d = 0; d < D; ++d) batch.x[d][batch.count] = xij[d];
-      batch.r2[batch.count] = r2;
-      if (++batch.count == batch_size) {
-        f(std::as_const(batch));
-        batch.count = 0;
-      }
-    });
-    if (batch.count > 0) f(std::as_const(batch));
   }
 
   std::size_t bytes() const {

@@ -44,17 +44,6 @@ class FluidWallNeighbors {
                               F&& f) const {
     fluid_to_walls_list_.for_each(i, fluid_x, wall_x, f);
   }
-  /// The same neighbours in batches (NeighborList::for_each_batch), for passes whose pair terms
-  /// vectorise.
-  template <class F>
-  void for_each_fluid_batch(std::size_t i, const ConstVectorView<D>& fluid_x, F&& f) const {
-    fluid_list_.for_each_batch(i, fluid_x, fluid_x, f);
-  }
-  template <class F>
-  void for_each_wall_batch(std::size_t i, const ConstVectorView<D>& fluid_x, const ConstVectorView<D>& wall_x,
-                           F&& f) const {
-    fluid_to_walls_list_.for_each_batch(i, fluid_x, wall_x, f);
-  }
   template <class F>
   void for_each_fluid_neighbor_of_wall(std::size_t b, const ConstVectorView<D>& wall_x,
                                        const ConstVectorView<D>& fluid_x, F&& f) const {

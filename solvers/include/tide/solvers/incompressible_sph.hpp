@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
+#include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -56,6 +58,7 @@ class IncompressibleSph final : public Simulation<D> {
   Real max_speed() const override { return max_speed_; }
   std::size_t removed_total() const override { return neighbors_.fluid_grid().removed_total(); }
   const PassTimes& pass_times() const override { return pass_times_; }
+  const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
   double bytes_per_particle() const override;
 
  private:
@@ -91,6 +94,7 @@ class IncompressibleSph final : public Simulation<D> {
   std::size_t worst_particle_ = 0;  // largest excess of the last solve, for the diagnosis
   Real worst_excess_ = 0;
   PassTimes pass_times_;
+  std::vector<std::string_view> pipeline_;
 };
 
 extern template class IncompressibleSph<2>;

@@ -18,6 +18,8 @@ struct FluidFields {
   ScalarField density_rate;         // continuity density, and the incompressible solves (slot unused otherwise)
   VectorField shift;                // only with particle shifting (slot unused otherwise)
   ScalarField position_divergence;  // only with particle shifting: ∇·r, the free-surface marker
+  IndexField phase;                 // only with several fluid materials: the particle's material index
+  VectorField colour_gradient;      // only with surface tension csf (∇c) or akinci (the surface normal)
 };
 
 /// Handles of the wall-particle fields (Adami, Hu & Adams 2012).

@@ -21,16 +21,20 @@ Vector<D> to_vector(const scene::Vec& v) {
 template <int D>
 Vector<D> lattice_anchor(const scene::Scene& scene);
 
-/// Sampled particles: positions and, index for index, velocities.
+/// Sampled particles: positions and, index for index, velocities and (fluid only) the material
+/// of the block each came from.
 template <int D>
 struct ParticleSamples {
   std::vector<Vector<D>> positions;
   std::vector<Vector<D>> velocities;
+  std::vector<std::size_t> materials;
   std::size_t size() const { return positions.size(); }
 };
 
 /// Fluid particles: lattice points inside the fluid blocks, leaving out points inside solid
-/// obstacles or outside the container's inner box, with their block's initial velocity.
+/// obstacles or outside the container's inner box, with their block's initial velocity and
+/// material. Where blocks overlap, the later block takes the point (a droplet listed after the
+/// fluid around it replaces that fluid).
 template <int D>
 ParticleSamples<D> sample_fluid(const scene::Scene& scene);
 

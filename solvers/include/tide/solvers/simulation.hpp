@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -24,8 +25,10 @@ struct PassTimes {
   double pressure_solve = 0;   // incompressible schemes: the implicit pressure solves (zero for WCSPH)
   double integration = 0;      // kicks, drift, stability check and reductions
   double shifting = 0;         // particle shifting (zero when off)
+  double surface_tension = 0;  // colour gradient, normals and tension forces (zero without tension)
   double total() const {
-    return neighbor_search + density + wall_state + momentum + pressure_solve + integration + shifting;
+    return neighbor_search + density + wall_state + momentum + pressure_solve + integration + shifting +
+           surface_tension;
   }
 };
 
@@ -92,6 +95,9 @@ class Simulation {
   virtual Real max_speed() const = 0;
   virtual std::size_t removed_total() const = 0;
   virtual const PassTimes& pass_times() const = 0;
+  /// The passes one step runs, in order, as the scene assembled them: a pass a scene does not
+  /// need is not in the list (DESIGN.md, "Pipelines").
+  virtual const std::vector<std::string_view>& pipeline() const = 0;
   /// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
   virtual double bytes_per_particle() const = 0;
 };

@@ -4,6 +4,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -12,20 +14,29 @@
 #include "tide/solvers/equation_of_state.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
 #include "tide/solvers/particle_fields.hpp"
+#include "tide/solvers/phases.hpp"
 #include "tide/solvers/simulation.hpp"
 #include "tide/solvers/time_step.hpp"
 
 namespace tide {
 
+namespace passes {
+struct SurfaceTensionSettings;
+}
+
 /// Weakly compressible SPH: density by summation (or continuity with δ-SPH diffusion), Tait or
 /// linear equation of state, symmetric pressure force, Monaghan artificial or Morris laminar
 /// viscosity, walls of particles with extrapolated pressure, kick–drift–kick integration with an
 /// adaptive time step. Every pass gathers from neighbours and writes only its own particle, so
-/// results are bitwise identical for any thread count.
+/// results are bitwise identical for any thread count. A scene whose fluid blocks use several
+/// materials runs multiphase: a phase index per particle, each phase's equation of state and
+/// viscosity, and the number-density formulation of Hu & Adams 2006. solver.surface_tension adds
+/// one of three tension models (docs/multiphase.md).
 template <int D>
 class Wcsph final : public Simulation<D> {
  public:
   explicit Wcsph(const scene::Scene& scene);
+  ~Wcsph() override;
 
   StepReport step() override;
 
@@ -47,11 +58,19 @@ class Wcsph final : public Simulation<D> {
   Real max_speed() const override { return max_speed_; }
   std::size_t removed_total() const override { return neighbors_.fluid_grid().removed_total(); }
   const PassTimes& pass_times() const override { return pass_times_; }
+  const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
+  /// The phases of a multiphase scene; null for a single fluid.
+  const Phases* phases() const { return phases_ ? &*phases_ : nullptr; }
+  /// The pairwise model's force strength s_ab between phases a and b (Tartakovsky & Meakin 2005);
+  /// 0 without it.
+  Real pair_strength(Index a, Index b) const;
   double bytes_per_particle() const override;
 
  private:
   void set_hydrostatic_density();
   void compute_interactions(const Vector<D>& gravity);
+  void add_surface_tension();
+  void build_pipeline();
   void compute_density_rate(const Vector<D>& gravity);
   void shift_particles(Real dt);
   void check_state();
@@ -64,6 +83,9 @@ class Wcsph final : public Simulation<D> {
   AnyKernel<D> kernel_;
   EquationOfState eos_;
   Real kinematic_viscosity_;
+  std::optional<Phases> phases_;
+  std::unique_ptr<const passes::SurfaceTensionSettings> tension_;
+  std::vector<std::string_view> pipeline_;
   TimeStepRule time_step_rule_;
   ParticleSet<D> fluid_;
   ParticleSet<D> walls_;

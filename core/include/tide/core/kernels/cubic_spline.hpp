@@ -1,6 +1,5 @@
 #pragma once
 
-#include <algorithm>
 #include <numbers>
 
 #include "tide/core/kernels/smoothing_length.hpp"
@@ -32,15 +31,14 @@ class CubicSplineKernel {
   Real smoothing_length() const { return smoothing_length_; }
   Real support_radius() const { return support_radius_; }
 
-  // Both pieces are evaluated and one is selected, and the support edge is a clamp, not a test:
-  // no branch, so a loop over a neighbour list vectorises, and the piece, which changes from pair
-  // to pair unpredictably (about 1 pair in 8 has q < 1 in 3D), costs no misprediction.
   Real value(Real r) const {
+    if (r >= support_radius_) return 0;
     const Real q = r * inverse_h_;
-    const Real two_minus_q = outer_distance(r);
-    const Real outer = Real(0.25) * value_scale_ * two_minus_q * two_minus_q * two_minus_q;
-    const Real inner = value_scale_ * (1 + q * q * (Real(-1.5) + Real(0.75) * q));
-    return q >= 1 ? outer : inner;
+    if (q >= 1) {
+      const Real two_minus_q = outer_distance(r);
+      return Real(0.25) * value_scale_ * two_minus_q * two_minus_q * two_minus_q;
+    }
+    return value_scale_ * (1 + q * q * (Real(-1.5) + Real(0.75) * q));
   }
 
   Real derivative(Real r) const {
@@ -56,21 +54,21 @@ class CubicSplineKernel {
   Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
     if (r >= support_radius_) return Vector<D>::Zero();
     const Real q = r * inverse_h_;
-    const Real two_minus_q = outer_distance(r);
-    // Both pieces, then a select (see value()). At r = 0 the outer one divides by zero and is
-    // not selected: the inner piece's dW/dr carries a factor q that cancels 1/r, so the gradient
-    // is exactly zero there without a special case.
-    const Real outer = Real(-0.75) * derivative_scale_ * two_minus_q * two_minus_q / r;
-    const Real inner = gradient_scale_ * (Real(-3) + Real(2.25) * q);
-    return (q >= 1 ? outer : inner) * x_ij;
+    if (q >= 1) {
+      const Real two_minus_q = outer_distance(r);
+      return (Real(-0.75) * derivative_scale_ * two_minus_q * two_minus_q / r) * x_ij;
+    }
+    // The inner piece's dW/dr carries a factor q that cancels 1/r: no division, and the gradient
+    // is exactly zero at r = 0 without a special case.
+    return (gradient_scale_ * (Real(-3) + Real(2.25) * q)) * x_ij;
   }
 
  private:
   static constexpr double sigma = D == 2 ? 10.0 / (7.0 * std::numbers::pi) : 1.0 / std::numbers::pi;
 
   // 2 − q taken from the distance to the support edge, so it stays positive inside the support
-  // even where r · (1/h) rounds to 2 or just above; 0 outside it, where W and ∇W vanish.
-  Real outer_distance(Real r) const { return std::max(support_radius_ - r, Real(0)) * inverse_h_; }
+  // even where r · (1/h) rounds to 2 or just above.
+  Real outer_distance(Real r) const { return (support_radius_ - r) * inverse_h_; }
 
   Real smoothing_length_;
   Real support_radius_;
