@@ -287,6 +287,19 @@ std::size_t NeighborGrid<D>::bytes_per_particle() const {
 }
 
 template <int D>
+void NeighborGrid<D>::release_update_memory() {
+  sort_workspace_ = PairSortWorkspace{};
+  own_neighbors_.clear(cell_codes_.size());
+}
+
+template <int D>
+void CrossNeighbors<D>::clear(std::size_t query_cells) {
+  range_offset_.assign(query_cells + 1, 0);
+  range_offset_.shrink_to_fit();
+  std::vector<CellRange>().swap(ranges_);
+}
+
+template <int D>
 void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid<D>& sources) {
   for (int d = 0; d < D; ++d) {
     if (queries.cell_counts_[d] != sources.cell_counts_[d] || queries.cell_size_[d] != sources.cell_size_[d] ||

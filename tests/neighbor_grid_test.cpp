@@ -318,6 +318,66 @@ TEST(NeighborGrid, WrapsPositionsOnPeriodicAxes) {
   }
 }
 
+// Every (query, source) neighbour pair a list over `table` yields, by particle id.
+template <int D>
+std::vector<std::pair<Index, Index>> listed_pairs(const NeighborGrid<D>& queries, const ParticleSet<D>& query_set,
+                                                  const CrossNeighbors<D>& table, const ParticleSet<D>& source_set) {
+  const auto qx = query_set[query_set.position()];
+  const auto sx = source_set[source_set.position()];
+  NeighborList<D> list;
+  list.build(queries, qx, table, sx);
+  std::vector<std::pair<Index, Index>> pairs;
+  for (std::size_t i = 0; i < query_set.size(); ++i)
+    list.for_each(i, qx, sx, [&](Index j, const Vector<D>&, Real) {
+      pairs.emplace_back(query_set[query_set.id()][i], source_set[source_set.id()][j]);
+    });
+  return pairs;
+}
+
+// A grid sorted once (fixed walls) frees its sort workspace and own table; the cross tables and
+// lists in both directions stay those of the full grid, and the next update restores everything.
+TEST(NeighborGrid, ReleasedGridStillLinksToAnotherSet) {
+  const GridDomain<3> domain = test_domain<3>(false);
+  NeighborGrid<3> fluid_grid(domain, support);
+  NeighborGrid<3> wall_grid(domain, support);
+  ParticleSet<3> fluid;
+  ParticleSet<3> walls;
+  const auto fluid_points = make_cloud<3>(Cloud::uniform, domain, fluid_grid.cell_size());
+  const auto wall_points = make_cloud<3>(Cloud::clustered, domain, wall_grid.cell_size());
+  fluid.append(fluid_points.size());
+  walls.append(wall_points.size());
+  for (std::size_t i = 0; i < fluid_points.size(); ++i) fluid[fluid.position()].set(i, fluid_points[i]);
+  for (std::size_t i = 0; i < wall_points.size(); ++i) walls[walls.position()].set(i, wall_points[i]);
+  ASSERT_EQ(fluid_grid.update(fluid), 0u);
+  ASSERT_EQ(wall_grid.update(walls), 0u);
+
+  const auto links = [&] {
+    CrossNeighbors<3> to_walls;
+    CrossNeighbors<3> to_fluid;
+    to_walls.build(fluid_grid, wall_grid);
+    to_fluid.build(wall_grid, fluid_grid);
+    return std::pair{listed_pairs<3>(fluid_grid, fluid, to_walls, walls),
+                     listed_pairs<3>(wall_grid, walls, to_fluid, fluid)};
+  };
+  const auto full = links();
+  ASSERT_GT(full.first.size(), fluid.size());
+  const std::size_t full_bytes = wall_grid.bytes_per_particle();
+
+  wall_grid.release_update_memory();
+  EXPECT_EQ(links(), full);
+  // The sort workspace alone is 24 B per particle (two 8-byte keys and two 4-byte indices).
+  EXPECT_LE(wall_grid.bytes_per_particle() + 24, full_bytes);
+  const auto wall_x = std::as_const(walls)[walls.position()];
+  std::size_t found = 0;
+  for (std::size_t i = 0; i < walls.size(); ++i)
+    wall_grid.for_each_neighbor(i, wall_x, [&](Index, const Vector<3>&, Real) { ++found; });
+  EXPECT_EQ(found, 0u);
+
+  ASSERT_EQ(wall_grid.update(walls), 0u);
+  EXPECT_EQ(links(), full);
+  EXPECT_EQ(wall_grid.bytes_per_particle(), full_bytes);
+}
+
 TEST(NeighborGrid, RejectsBadGeometry) {
   GridDomain<3> domain;
   EXPECT_THROW(NeighborGrid<3>(domain, 0), std::invalid_argument);
