@@ -378,6 +378,43 @@ TEST(NeighborGrid, ReleasedGridStillLinksToAnotherSet) {
   EXPECT_EQ(wall_grid.bytes_per_particle(), full_bytes);
 }
 
+// Sources in one corner of a closed domain, queries everywhere: the query cells far from the
+// sources skip their look-ups, and every query still gets exactly its brute-force neighbours.
+TEST(CrossNeighbors, FindsTheBruteForceNeighboursOfSourcesInACorner) {
+  const GridDomain<3> domain = test_domain<3>(false);
+  NeighborGrid<3> query_grid(domain, support);
+  NeighborGrid<3> source_grid(domain, support);
+  ParticleSet<3> queries;
+  ParticleSet<3> sources;
+  const auto query_points = make_cloud<3>(Cloud::clustered, domain, query_grid.cell_size());
+  std::vector<Vector<3>> source_points;
+  for (const Vector<3>& p : make_cloud<3>(Cloud::uniform, domain, source_grid.cell_size()))
+    if (p[0] < Real(0.3) && p[1] < Real(0.25)) source_points.push_back(p);
+  ASSERT_GT(source_points.size(), 100u);
+  queries.append(query_points.size());
+  sources.append(source_points.size());
+  for (std::size_t i = 0; i < query_points.size(); ++i) queries[queries.position()].set(i, query_points[i]);
+  for (std::size_t i = 0; i < source_points.size(); ++i) sources[sources.position()].set(i, source_points[i]);
+  ASSERT_EQ(query_grid.update(queries), 0u);
+  ASSERT_EQ(source_grid.update(sources), 0u);
+  CrossNeighbors<3> table;
+  table.build(query_grid, source_grid);
+
+  std::vector<std::vector<Index>> found(queries.size());
+  for (const auto& [query, source] : listed_pairs<3>(query_grid, queries, table, sources))
+    found[query].push_back(source);
+  const auto x = std::as_const(queries)[queries.position()];
+  const auto ids = std::as_const(queries)[queries.id()];
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    std::vector<Index>& mine = found[ids[i]];
+    std::sort(mine.begin(), mine.end());
+    ASSERT_EQ(mine, brute_force<3>(x[i], sources, domain)) << "query id " << ids[i];
+    pairs += mine.size();
+  }
+  EXPECT_GT(pairs, 0u);
+}
+
 TEST(NeighborGrid, RejectsBadGeometry) {
   GridDomain<3> domain;
   EXPECT_THROW(NeighborGrid<3>(domain, 0), std::invalid_argument);
