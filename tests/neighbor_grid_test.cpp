@@ -318,6 +318,14 @@ TEST(NeighborGrid, WrapsPositionsOnPeriodicAxes) {
   }
 }
 
+// A particle set with one particle at each point.
+ParticleSet<3> particles_at(const std::vector<Vector<3>>& points) {
+  ParticleSet<3> set;
+  set.append(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) set[set.position()].set(i, points[i]);
+  return set;
+}
+
 // Every (query, source) neighbour pair a list over `table` yields, by particle id.
 template <int D>
 std::vector<std::pair<Index, Index>> listed_pairs(const NeighborGrid<D>& queries, const ParticleSet<D>& query_set,
@@ -340,14 +348,8 @@ TEST(NeighborGrid, ReleasedGridStillLinksToAnotherSet) {
   const GridDomain<3> domain = test_domain<3>(false);
   NeighborGrid<3> fluid_grid(domain, support);
   NeighborGrid<3> wall_grid(domain, support);
-  ParticleSet<3> fluid;
-  ParticleSet<3> walls;
-  const auto fluid_points = make_cloud<3>(Cloud::uniform, domain, fluid_grid.cell_size());
-  const auto wall_points = make_cloud<3>(Cloud::clustered, domain, wall_grid.cell_size());
-  fluid.append(fluid_points.size());
-  walls.append(wall_points.size());
-  for (std::size_t i = 0; i < fluid_points.size(); ++i) fluid[fluid.position()].set(i, fluid_points[i]);
-  for (std::size_t i = 0; i < wall_points.size(); ++i) walls[walls.position()].set(i, wall_points[i]);
+  ParticleSet<3> fluid = particles_at(make_cloud<3>(Cloud::uniform, domain, fluid_grid.cell_size()));
+  ParticleSet<3> walls = particles_at(make_cloud<3>(Cloud::clustered, domain, wall_grid.cell_size()));
   ASSERT_EQ(fluid_grid.update(fluid), 0u);
   ASSERT_EQ(wall_grid.update(walls), 0u);
 
@@ -384,17 +386,12 @@ TEST(CrossNeighbors, FindsTheBruteForceNeighboursOfSourcesInACorner) {
   const GridDomain<3> domain = test_domain<3>(false);
   NeighborGrid<3> query_grid(domain, support);
   NeighborGrid<3> source_grid(domain, support);
-  ParticleSet<3> queries;
-  ParticleSet<3> sources;
-  const auto query_points = make_cloud<3>(Cloud::clustered, domain, query_grid.cell_size());
   std::vector<Vector<3>> source_points;
   for (const Vector<3>& p : make_cloud<3>(Cloud::uniform, domain, source_grid.cell_size()))
     if (p[0] < Real(0.3) && p[1] < Real(0.25)) source_points.push_back(p);
   ASSERT_GT(source_points.size(), 100u);
-  queries.append(query_points.size());
-  sources.append(source_points.size());
-  for (std::size_t i = 0; i < query_points.size(); ++i) queries[queries.position()].set(i, query_points[i]);
-  for (std::size_t i = 0; i < source_points.size(); ++i) sources[sources.position()].set(i, source_points[i]);
+  ParticleSet<3> queries = particles_at(make_cloud<3>(Cloud::clustered, domain, query_grid.cell_size()));
+  ParticleSet<3> sources = particles_at(source_points);
   ASSERT_EQ(query_grid.update(queries), 0u);
   ASSERT_EQ(source_grid.update(sources), 0u);
   CrossNeighbors<3> table;
