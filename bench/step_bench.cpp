@@ -271,8 +271,8 @@ void register_reference() {
 }
 
 // Each optional feature of the WCSPH step, on and off, on the 3D dam break at 10^5 particles.
-// Surface tension and multiple phases (being built on another branch) join this list as two
-// more entries.
+// Surface tension and multiple phases (on main since the multiphase merge) need a two-fluid
+// scene rather than a switch on this one, and are not entries yet.
 struct Feature {
   const char* name;
   std::function<void(scene::Scene&)> on;

@@ -239,7 +239,7 @@ def main():
         w("3D dam break at 10^5 particles, WCSPH, 2 threads, double. *off* is the scene without the feature;")
         w("every optional feature is chosen once per pass outside the particle loop (a template flag or a pass")
         w("that is not run), so *off* runs the same instructions as a build in which the feature does not")
-        w("exist. Surface tension and multiple phases (another branch) join as two more `BM_Feature` entries.\n")
+        w("exist. Surface tension and multiple phases (a two-fluid scene, not a switch on this one) are not entries yet.\n")
         w("| feature | off: ms/step | on: ms/step | cost when on |")
         w("|---|--:|--:|--:|")
         for feature, pair in sorted(feats.items()):
