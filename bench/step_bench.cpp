@@ -30,8 +30,13 @@
 //   ns/pair           wall time per step / (fluid-fluid + fluid-wall neighbour pairs, i itself
 //                     included), counted once after the timed loop: the cost per particle-neighbour
 //                     interaction of the whole step
-//   B/particle        Simulation::bytes_per_particle(): fluid and wall fields plus every neighbour
-//                     structure (grids, range tables, neighbour lists), per fluid particle
+//   B/particle        Simulation::bytes_per_particle(): fluid and wall fields (with their reorder
+//                     workspace) plus every neighbour structure (grids, range tables, neighbour
+//                     lists), per fluid particle
+//   B_fluid, B_walls, B_grids, B_lists   its parts, per fluid particle: fluid fields and wall
+//                     fields (each with the reorder workspace of ParticleSet::permute), the two
+//                     grids (sort workspace, cell tables, own range tables) and the rest
+//                     (fluid-wall range tables and the three neighbour lists)
 //   f_nbr, f_density, f_wall, f_momentum, f_solve, f_integr, f_shift
 //                     share of the step in each part, from Simulation::pass_times(): neighbour
 //                     search (sort, reorder, cell tables, neighbour lists), density (+ EOS; for the
@@ -185,6 +190,17 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads) {
     state.counters["particle-steps/s"] = Counter(fluid, Counter::kIsIterationInvariantRate);
     state.counters["ns/pair"] = Counter(1e9 * wall_seconds / (steps * pairs));
     state.counters["B/particle"] = Counter(simulation.bytes_per_particle());
+    const double fluid_fields =
+        double(simulation.fluid().bytes_per_particle()) * fluid + double(simulation.fluid().scratch_bytes());
+    const double wall_fields = double(simulation.walls().bytes_per_particle() * simulation.walls().size() +
+                                      simulation.walls().scratch_bytes());
+    const double grids =
+        double(simulation.fluid_grid().bytes_per_particle() * simulation.fluid_grid().particle_count() +
+               simulation.wall_grid().bytes_per_particle() * simulation.wall_grid().particle_count());
+    state.counters["B_fluid"] = Counter(fluid_fields / fluid);
+    state.counters["B_walls"] = Counter(wall_fields / fluid);
+    state.counters["B_grids"] = Counter(grids / fluid);
+    state.counters["B_lists"] = Counter(simulation.bytes_per_particle() - (fluid_fields + wall_fields + grids) / fluid);
     const auto share = [&](const char* name, double tide::PassTimes::*part) {
       const double f = (after.*part - before.*part) / wall_seconds;
       state.counters[name] = Counter(f);
@@ -255,8 +271,8 @@ void register_reference() {
 }
 
 // Each optional feature of the WCSPH step, on and off, on the 3D dam break at 10^5 particles.
-// Surface tension and multiple phases (being built on another branch) join this list as two
-// more entries.
+// Surface tension and multiple phases (on main since the multiphase merge) need a two-fluid
+// scene rather than a switch on this one, and are not entries yet.
 struct Feature {
   const char* name;
   std::function<void(scene::Scene&)> on;

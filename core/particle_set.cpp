@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "tide/core/parallel.hpp"
 
@@ -136,6 +137,18 @@ void ParticleSet<D>::permute(std::span<const Index> order) {
 template <int D>
 std::size_t ParticleSet<D>::bytes_per_particle() const {
   return reals_.size() * sizeof(Real) + indices_.size() * sizeof(Index);
+}
+
+template <int D>
+std::size_t ParticleSet<D>::scratch_bytes() const {
+  return real_scratch_.capacity() * sizeof(Real) + index_scratch_.capacity() * sizeof(Index);
+}
+
+template <int D>
+void ParticleSet<D>::release_scratch() {
+  // Swapped with empty vectors: assigning {} would clear them and keep their capacity.
+  std::vector<Real>().swap(real_scratch_);
+  std::vector<Index>().swap(index_scratch_);
 }
 
 template class ParticleSet<2>;

@@ -287,6 +287,19 @@ std::size_t NeighborGrid<D>::bytes_per_particle() const {
 }
 
 template <int D>
+void NeighborGrid<D>::release_update_memory() {
+  sort_workspace_ = PairSortWorkspace{};
+  own_neighbors_.clear(cell_codes_.size());
+}
+
+template <int D>
+void CrossNeighbors<D>::clear(std::size_t query_cells) {
+  range_offset_.assign(query_cells + 1, 0);
+  range_offset_.shrink_to_fit();
+  std::vector<CellRange>().swap(ranges_);
+}
+
+template <int D>
 void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid<D>& sources) {
   for (int d = 0; d < D; ++d) {
     if (queries.cell_counts_[d] != sources.cell_counts_[d] || queries.cell_size_[d] != sources.cell_size_[d] ||
@@ -295,6 +308,32 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
   }
   shifts_ = sources.shifts_;
   support_squared_ = sources.support_squared_;
+  // Box of the occupied source cells: a query cell more than one cell outside it on a closed
+  // axis has no source in its stencil and needs no look-ups (e.g. the walls above the water).
+  using Box = std::array<std::array<std::uint32_t, D>, 2>;
+  Box empty;
+  empty[0].fill(std::numeric_limits<std::uint32_t>::max());
+  empty[1].fill(0);
+  const Box occupied = reduce(
+      sources.cell_codes_.size(), empty,
+      [&](std::size_t c) {
+        const auto cell = morton_decode<D>(sources.cell_codes_[c]);
+        return Box{cell, cell};
+      },
+      [](Box a, const Box& b) {
+        for (int d = 0; d < D; ++d) {
+          a[0][d] = std::min(a[0][d], b[0][d]);
+          a[1][d] = std::max(a[1][d], b[1][d]);
+        }
+        return a;
+      });
+  const auto near_sources = [&](const std::array<std::int64_t, D>& cell) {
+    for (int d = 0; d < D; ++d) {
+      if (sources.domain_.periodic[d]) continue;
+      if (cell[d] + 1 < std::int64_t(occupied[0][d]) || cell[d] > std::int64_t(occupied[1][d]) + 1) return false;
+    }
+    return true;
+  };
   // One stencil per query cell, gathered per fixed block of cells and then placed by a prefix
   // sum, so the layout is independent of the thread count.
   const std::size_t cells = queries.cell_codes_.size();
@@ -306,7 +345,8 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
     std::array<CellRange, NeighborGrid<D>::stencil_size> stencil;
     for (std::size_t b = first; b < last; ++b) {
       for (std::size_t c = b * cell_block; c < std::min(cells, (b + 1) * cell_block); ++c) {
-        const int count = sources.stencil_ranges(queries.cell_coordinates(c), stencil);
+        const auto cell = queries.cell_coordinates(c);
+        const int count = near_sources(cell) ? sources.stencil_ranges(cell, stencil) : 0;
         range_offset_[c + 1] = static_cast<std::uint32_t>(count);
         block_ranges[b].insert(block_ranges[b].end(), stencil.begin(), stencil.begin() + count);
       }

@@ -73,13 +73,14 @@ Vector<D> hydrostatic_part(const scene::Scene& scene, Vector<D> body_force) {
   return body_force;
 }
 
-/// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
+/// Bytes per fluid particle: fluid and wall fields (with their reorder workspace) plus every neighbour table.
 template <int D>
 double bytes_per_particle(const ParticleSet<D>& fluid, const ParticleSet<D>& walls,
                           const FluidWallNeighbors<D>& neighbors) {
   const double fluid_count = static_cast<double>(std::max<std::size_t>(fluid.size(), 1));
   const double fields =
-      static_cast<double>(fluid.bytes_per_particle() * fluid.size() + walls.bytes_per_particle() * walls.size());
+      static_cast<double>(fluid.bytes_per_particle() * fluid.size() + walls.bytes_per_particle() * walls.size() +
+                          fluid.scratch_bytes() + walls.scratch_bytes());
   return (fields + static_cast<double>(neighbors.bytes())) / fluid_count;
 }
 

@@ -318,6 +318,100 @@ TEST(NeighborGrid, WrapsPositionsOnPeriodicAxes) {
   }
 }
 
+// A particle set with one particle at each point.
+ParticleSet<3> particles_at(const std::vector<Vector<3>>& points) {
+  ParticleSet<3> set;
+  set.append(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) set[set.position()].set(i, points[i]);
+  return set;
+}
+
+// Every (query, source) neighbour pair a list over `table` yields, by particle id.
+template <int D>
+std::vector<std::pair<Index, Index>> listed_pairs(const NeighborGrid<D>& queries, const ParticleSet<D>& query_set,
+                                                  const CrossNeighbors<D>& table, const ParticleSet<D>& source_set) {
+  const auto qx = query_set[query_set.position()];
+  const auto sx = source_set[source_set.position()];
+  NeighborList<D> list;
+  list.build(queries, qx, table, sx);
+  std::vector<std::pair<Index, Index>> pairs;
+  for (std::size_t i = 0; i < query_set.size(); ++i)
+    list.for_each(i, qx, sx, [&](Index j, const Vector<D>&, Real) {
+      pairs.emplace_back(query_set[query_set.id()][i], source_set[source_set.id()][j]);
+    });
+  return pairs;
+}
+
+// A grid sorted once (fixed walls) frees its sort workspace and own table; the cross tables and
+// lists in both directions stay those of the full grid, and the next update restores everything.
+TEST(NeighborGrid, ReleasedGridStillLinksToAnotherSet) {
+  const GridDomain<3> domain = test_domain<3>(false);
+  NeighborGrid<3> fluid_grid(domain, support);
+  NeighborGrid<3> wall_grid(domain, support);
+  ParticleSet<3> fluid = particles_at(make_cloud<3>(Cloud::uniform, domain, fluid_grid.cell_size()));
+  ParticleSet<3> walls = particles_at(make_cloud<3>(Cloud::clustered, domain, wall_grid.cell_size()));
+  ASSERT_EQ(fluid_grid.update(fluid), 0u);
+  ASSERT_EQ(wall_grid.update(walls), 0u);
+
+  const auto links = [&] {
+    CrossNeighbors<3> to_walls;
+    CrossNeighbors<3> to_fluid;
+    to_walls.build(fluid_grid, wall_grid);
+    to_fluid.build(wall_grid, fluid_grid);
+    return std::pair{listed_pairs<3>(fluid_grid, fluid, to_walls, walls),
+                     listed_pairs<3>(wall_grid, walls, to_fluid, fluid)};
+  };
+  const auto full = links();
+  ASSERT_GT(full.first.size(), fluid.size());
+  const std::size_t full_bytes = wall_grid.bytes_per_particle();
+
+  wall_grid.release_update_memory();
+  EXPECT_EQ(links(), full);
+  // The sort workspace alone is 24 B per particle (two 8-byte keys and two 4-byte indices).
+  EXPECT_LE(wall_grid.bytes_per_particle() + 24, full_bytes);
+  const auto wall_x = std::as_const(walls)[walls.position()];
+  std::size_t found = 0;
+  for (std::size_t i = 0; i < walls.size(); ++i)
+    wall_grid.for_each_neighbor(i, wall_x, [&](Index, const Vector<3>&, Real) { ++found; });
+  EXPECT_EQ(found, 0u);
+
+  ASSERT_EQ(wall_grid.update(walls), 0u);
+  EXPECT_EQ(links(), full);
+  EXPECT_EQ(wall_grid.bytes_per_particle(), full_bytes);
+}
+
+// Sources in one corner of a closed domain, queries everywhere: the query cells far from the
+// sources skip their look-ups, and every query still gets exactly its brute-force neighbours.
+TEST(CrossNeighbors, FindsTheBruteForceNeighboursOfSourcesInACorner) {
+  const GridDomain<3> domain = test_domain<3>(false);
+  NeighborGrid<3> query_grid(domain, support);
+  NeighborGrid<3> source_grid(domain, support);
+  std::vector<Vector<3>> source_points;
+  for (const Vector<3>& p : make_cloud<3>(Cloud::uniform, domain, source_grid.cell_size()))
+    if (p[0] < Real(0.3) && p[1] < Real(0.25)) source_points.push_back(p);
+  ASSERT_GT(source_points.size(), 100u);
+  ParticleSet<3> queries = particles_at(make_cloud<3>(Cloud::clustered, domain, query_grid.cell_size()));
+  ParticleSet<3> sources = particles_at(source_points);
+  ASSERT_EQ(query_grid.update(queries), 0u);
+  ASSERT_EQ(source_grid.update(sources), 0u);
+  CrossNeighbors<3> table;
+  table.build(query_grid, source_grid);
+
+  std::vector<std::vector<Index>> found(queries.size());
+  for (const auto& [query, source] : listed_pairs<3>(query_grid, queries, table, sources))
+    found[query].push_back(source);
+  const auto x = std::as_const(queries)[queries.position()];
+  const auto ids = std::as_const(queries)[queries.id()];
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    std::vector<Index>& mine = found[ids[i]];
+    std::sort(mine.begin(), mine.end());
+    ASSERT_EQ(mine, brute_force<3>(x[i], sources, domain)) << "query id " << ids[i];
+    pairs += mine.size();
+  }
+  EXPECT_GT(pairs, 0u);
+}
+
 TEST(NeighborGrid, RejectsBadGeometry) {
   GridDomain<3> domain;
   EXPECT_THROW(NeighborGrid<3>(domain, 0), std::invalid_argument);

@@ -79,5 +79,23 @@ TEST(ParticleSet, PermuteKeepsEveryFieldConsistent) {
   }
 }
 
+TEST(ParticleSet, ReorderWorkspaceIsCountedAndReleased) {
+  ParticleSet<2> set;
+  const auto mass = set.add_scalar("mass");
+  constexpr std::size_t n = 1000;
+  set.append(n);
+  for (std::size_t i = 0; i < n; ++i) set[mass][i] = static_cast<Real>(i);
+  EXPECT_EQ(set.scratch_bytes(), 0u);
+  std::vector<Index> reversed(n);
+  for (std::size_t i = 0; i < n; ++i) reversed[i] = static_cast<Index>(n - 1 - i);
+  set.permute(reversed);
+  // One array per element type, at least n long: the old arrays swapped out by the gather.
+  EXPECT_GE(set.scratch_bytes(), n * (sizeof(Real) + sizeof(Index)));
+  set.release_scratch();
+  EXPECT_EQ(set.scratch_bytes(), 0u);
+  set.permute(reversed);  // reallocates, and the reorder is still exact
+  for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(set[mass][i], static_cast<Real>(i));
+}
+
 }  // namespace
 }  // namespace tide

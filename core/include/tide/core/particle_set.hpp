@@ -117,6 +117,12 @@ class ParticleSet {
   /// Bytes of field storage per particle (all fields, all components).
   std::size_t bytes_per_particle() const;
 
+  /// Bytes of the workspace `permute` keeps between calls (one array of each element type).
+  std::size_t scratch_bytes() const;
+
+  /// Frees that workspace, for a set that is not reordered again (the next permute reallocates).
+  void release_scratch();
+
  private:
   const FieldInfo* find(std::string_view name) const;
   const FieldInfo& require(std::string_view name, FieldKind kind) const;

@@ -56,6 +56,9 @@ class CrossNeighbors {
  public:
   void build(const NeighborGrid<D>& queries, const NeighborGrid<D>& sources);
 
+  /// A table with no ranges for each of `query_cells` cells: every walk finds nothing.
+  void clear(std::size_t query_cells);
+
   /// Calls f(j, x_ij, r2) for every source particle j with r2 = |x_ij|² < support², where
   /// x_ij = x − x_j (minimum image) and x lies in query cell `cell`.
   template <class F>
@@ -151,6 +154,11 @@ class NeighborGrid {
 
   /// Bytes the grid keeps (tables and sort workspace), per particle of the last update.
   std::size_t bytes_per_particle() const;
+
+  /// For a set sorted once that afterwards only takes part in CrossNeighbors tables (fixed
+  /// walls): frees the sort workspace and the table of the grid over itself, which such a set
+  /// never walks. for_each_neighbor then finds nothing until the next update rebuilds both.
+  void release_update_memory();
 
  private:
   friend class CrossNeighbors<D>;

@@ -17,8 +17,13 @@ class FluidWallNeighbors {
   FluidWallNeighbors(const GridDomain<D>& domain, Real support_radius)
       : fluid_grid_(domain, support_radius), wall_grid_(domain, support_radius) {}
 
-  /// Sorts the walls once; they do not move.
-  void set_walls(ParticleSet<D>& walls) { wall_grid_.update(walls); }
+  /// Sorts the walls once; they do not move, so the workspaces of that sort and the walls'
+  /// table over themselves (no pass walks wall-wall pairs) are freed.
+  void set_walls(ParticleSet<D>& walls) {
+    wall_grid_.update(walls);
+    wall_grid_.release_update_memory();
+    walls.release_scratch();
+  }
 
   /// Re-sorts the fluid, relinks it with the walls (`walls` as last passed to set_walls) and
   /// lists the neighbours; returns the particles removed. The passes' positions must stay those
