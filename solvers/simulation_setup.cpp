@@ -160,6 +160,10 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
       rho[i] = phases->table[samples.materials[i]].rest_density;
     }
   }
+  if (scene.solver.shifting != scene::Shifting::none) {
+    fields.shift = fluid.add_vector("shift");
+    fields.position_divergence = fluid.add_scalar("position_divergence");
+  }
   return fluid;
 }
 

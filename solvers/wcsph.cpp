@@ -56,10 +56,6 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
     if (tension_model != scene::SurfaceTensionModel::pairwise)
       fluid_fields_.colour_gradient = fluid_.add_vector("colour_gradient");
   }
-  if (scene.solver.shifting != scene::Shifting::none) {
-    fluid_fields_.shift = fluid_.add_vector("shift");
-    fluid_fields_.position_divergence = fluid_.add_scalar("position_divergence");
-  }
   if (scene.solver.density == scene::DensityMethod::continuity) {
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
     set_hydrostatic_density();
@@ -301,21 +297,12 @@ void Wcsph<D>::impose_inflow(Real drift_time) {
 
 template <int D>
 void Wcsph<D>::shift_particles(Real dt) {
-  const Real spacing = static_cast<Real>(scene_.particle_spacing);
   std::visit(
       [&](const auto& kernel) {
-        const passes::ShiftingSettings settings{4 * smoothing_length_ * max_speed_ * dt, kernel.value(spacing),
-                                                Real(D) - Real(0.5), Real(D) / 2};
-        passes::position_divergence<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
-                                       fluid_[fluid_fields_.position_divergence]);
-        passes::particle_shifting<D>(kernel, settings, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
-                                     std::as_const(fluid_)[fluid_fields_.position_divergence],
-                                     fluid_[fluid_fields_.shift]);
+        passes::shift_particles<D>(kernel, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_,
+                                   dt, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_);
       },
       kernel_);
-  auto x = fluid_[fluid_fields_.position];
-  const auto shift = std::as_const(fluid_)[fluid_fields_.shift];
-  for_each_particle(fluid_.size(), [&](std::size_t i) { x.set(i, x[i] + shift[i]); });
 }
 
 template <int D>

@@ -4,8 +4,10 @@
 // concentration that keep the distribution uniform, projected at a free surface so that the
 // surface does not diffuse.
 
+#include <algorithm>
 #include <cmath>
 #include <span>
+#include <utility>
 
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
@@ -107,6 +109,27 @@ void particle_shifting(const Kernel& kernel, const ShiftingSettings& settings, c
     }
     shift.set(i, delta);
   });
+}
+
+/// Moves every fluid particle by its shift: position_divergence, then particle_shifting with the
+/// diffusion 4 h U Δt for the fastest particle speed U (Sun et al. 2017, eq. 9), at most h²/2, the
+/// Fourier-stability limit of one explicit diffusion step of the concentration (Lind et al. 2012,
+/// Sec. 3.2): a weakly compressible step keeps far below it, but the time step of the
+/// incompressible schemes, CFL h / U, would give 4 CFL h² and overshoot the uniform distribution.
+/// The anti-pairing term is scaled by the kernel at one particle spacing, and the free-surface
+/// thresholds are those of Lind et al. 2012 (∇·r < D − 0.5; splash below D/2).
+template <int D, class Kernel>
+void shift_particles(const Kernel& kernel, Real spacing, Real smoothing_length, Real max_speed, Real dt,
+                     ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
+                     const ParticleSet<D>& walls, const WallFields<D>& w) {
+  const Real diffusion = std::min(4 * smoothing_length * max_speed * dt, smoothing_length * smoothing_length / 2);
+  const ShiftingSettings settings{diffusion, kernel.value(spacing), Real(D) - Real(0.5), Real(D) / 2};
+  position_divergence<D>(kernel, fluid, f, neighbors, walls, w, fluid[f.position_divergence]);
+  particle_shifting<D>(kernel, settings, fluid, f, neighbors, walls, w, std::as_const(fluid)[f.position_divergence],
+                       fluid[f.shift]);
+  auto x = fluid[f.position];
+  const auto shift = std::as_const(fluid)[f.shift];
+  for_each_particle(fluid.size(), [&](std::size_t i) { x.set(i, x[i] + shift[i]); });
 }
 
 }  // namespace tide::passes
