@@ -135,20 +135,36 @@ void ParticleSet<D>::permute(std::span<const Index> order) {
 }
 
 template <int D>
-std::size_t ParticleSet<D>::bytes_per_particle() const {
-  return reals_.size() * sizeof(Real) + indices_.size() * sizeof(Index);
+std::size_t ParticleSet<D>::field_bytes() const {
+  std::size_t bytes = 0;
+  for (const auto& values : reals_) bytes += held_bytes(values);
+  for (const auto& values : indices_) bytes += held_bytes(values);
+  return bytes;
 }
 
 template <int D>
 std::size_t ParticleSet<D>::scratch_bytes() const {
-  return real_scratch_.capacity() * sizeof(Real) + index_scratch_.capacity() * sizeof(Index);
+  return held_bytes(real_scratch_) + held_bytes(index_scratch_);
+}
+
+template <int D>
+void ParticleSet<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
+  for (const FieldInfo& field : fields_) {
+    std::size_t bytes = 0;
+    if (field.kind == FieldKind::index) {
+      bytes = held_bytes(indices_[field.slot]);
+    } else {
+      for (int c = 0; c < field.components; ++c) bytes += held_bytes(reals_[field.slot + std::size_t(c)]);
+    }
+    usage.add(owner + "." + field.name, bytes);
+  }
+  usage.add(owner + ".reorder scratch", scratch_bytes());
 }
 
 template <int D>
 void ParticleSet<D>::release_scratch() {
-  // Swapped with empty vectors: assigning {} would clear them and keep their capacity.
-  std::vector<Real>().swap(real_scratch_);
-  std::vector<Index>().swap(index_scratch_);
+  release_memory(real_scratch_);
+  release_memory(index_scratch_);
 }
 
 template class ParticleSet<2>;

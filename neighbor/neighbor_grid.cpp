@@ -248,8 +248,8 @@ void NeighborGrid<D>::build_lookup() {
   if (lookup_ == CellLookup::automatic)
     active_lookup_ = total <= dense_cells_per_particle * particle_cell_.size() ? CellLookup::dense : CellLookup::hash;
   if (active_lookup_ == CellLookup::dense) {
-    hash_codes_ = {};
-    hash_slots_ = {};
+    release_memory(hash_codes_);
+    release_memory(hash_slots_);
     dense_slots_.assign(total, no_cell);
     for_each_particle(cells, [&](std::size_t c) {
       std::size_t linear = 0;
@@ -259,7 +259,7 @@ void NeighborGrid<D>::build_lookup() {
     });
     return;
   }
-  dense_slots_ = {};
+  release_memory(dense_slots_);
   const std::size_t capacity = std::bit_ceil(std::max<std::size_t>(2 * cells, 16));
   hash_codes_.assign(capacity, invalid_code_);
   hash_slots_.resize(capacity);
@@ -275,15 +275,22 @@ void NeighborGrid<D>::build_lookup() {
 }
 
 template <int D>
-std::size_t NeighborGrid<D>::bytes_per_particle() const {
-  const std::size_t n = std::max<std::size_t>(particle_count(), 1);
-  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  const std::size_t total = bytes(sort_workspace_.keys) + bytes(sort_workspace_.order) +
-                            bytes(sort_workspace_.key_scratch) + bytes(sort_workspace_.order_scratch) +
-                            bytes(sort_workspace_.histogram) + bytes(cell_codes_) + bytes(cell_start_) +
-                            bytes(particle_cell_) + bytes(hash_codes_) + bytes(hash_slots_) + bytes(dense_slots_) +
-                            own_neighbors_.bytes();
-  return total / n;
+std::size_t NeighborGrid<D>::bytes() const {
+  MemoryUsage usage;
+  add_memory(usage, "grid");
+  return usage.total();
+}
+
+template <int D>
+void NeighborGrid<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
+  const PairSortWorkspace& sort = sort_workspace_;
+  usage.add(owner + ".sort keys", held_bytes(sort.keys) + held_bytes(sort.key_scratch));
+  usage.add(owner + ".sort order", held_bytes(sort.order) + held_bytes(sort.order_scratch));
+  usage.add(owner + ".sort histogram", sort.histogram);
+  usage.add(owner + ".particle cell", particle_cell_);
+  usage.add(owner + ".cell codes and starts", held_bytes(cell_codes_) + held_bytes(cell_start_));
+  usage.add(owner + ".cell lookup", held_bytes(hash_codes_) + held_bytes(hash_slots_) + held_bytes(dense_slots_));
+  own_neighbors_.add_memory(usage, owner + ".own table");
 }
 
 template <int D>
@@ -293,10 +300,16 @@ void NeighborGrid<D>::release_update_memory() {
 }
 
 template <int D>
+void CrossNeighbors<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
+  usage.add(owner + ".range offsets", range_offset_);
+  usage.add(owner + ".ranges", ranges_);
+}
+
+template <int D>
 void CrossNeighbors<D>::clear(std::size_t query_cells) {
   range_offset_.assign(query_cells + 1, 0);
   range_offset_.shrink_to_fit();
-  std::vector<CellRange>().swap(ranges_);
+  release_memory(ranges_);
 }
 
 template <int D>

@@ -15,7 +15,23 @@ TEST(ParticleSet, StartsWithIdAndPositionOnly) {
   EXPECT_EQ(set.fields()[0].name, "id");
   EXPECT_EQ(set.fields()[1].name, "position");
   EXPECT_EQ(set.fields()[1].components, 3);
-  EXPECT_EQ(set.bytes_per_particle(), sizeof(Index) + 3 * sizeof(Real));
+  EXPECT_EQ(set.field_bytes(), 0u);
+  set.append(10);
+  EXPECT_EQ(set.field_bytes(), 10 * (sizeof(Index) + 3 * sizeof(Real)));
+}
+
+TEST(ParticleSet, FieldBytesCountWhatTheArraysHoldNotTheirSize) {
+  ParticleSet<3> set;
+  set.add_scalar("density");
+  set.append(1000);
+  set.append(1);  // the arrays grow geometrically: they hold more than 1001 particles
+  const std::size_t per_particle = sizeof(Index) + 4 * sizeof(Real);
+  EXPECT_GT(set.field_bytes(), set.size() * per_particle);
+  MemoryUsage usage;
+  set.add_memory(usage, "fluid");
+  ASSERT_EQ(usage.items().size(), 4u);  // id, position, density, reorder scratch
+  EXPECT_EQ(usage.items()[1].name, "fluid.position");
+  EXPECT_EQ(usage.total(), set.field_bytes() + set.scratch_bytes());
 }
 
 TEST(ParticleSet, AppendAssignsFreshIdsAndZeroFields) {

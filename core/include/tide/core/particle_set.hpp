@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tide/core/memory_usage.hpp"
 #include "tide/core/types.hpp"
 
 namespace tide {
@@ -114,11 +115,15 @@ class ParticleSet {
   /// Fields in creation order.
   const std::vector<FieldInfo>& fields() const { return fields_; }
 
-  /// Bytes of field storage per particle (all fields, all components).
-  std::size_t bytes_per_particle() const;
+  /// Bytes the field arrays hold (all fields, all components): their capacity, which can exceed
+  /// size() after appends or removals.
+  std::size_t field_bytes() const;
 
   /// Bytes of the workspace `permute` keeps between calls (one array of each element type).
   std::size_t scratch_bytes() const;
+
+  /// Adds one item per field ("<owner>.<field>") and one for the reorder workspace.
+  void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
   /// Frees that workspace, for a set that is not reordered again (the next permute reallocates).
   void release_scratch();

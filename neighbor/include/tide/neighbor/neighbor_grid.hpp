@@ -6,9 +6,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <string_view>
 #include <vector>
 
+#include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/types.hpp"
 #include "tide/neighbor/pair_sort.hpp"
@@ -93,9 +95,10 @@ class CrossNeighbors {
     }
   }
 
-  std::size_t bytes() const {
-    return range_offset_.capacity() * sizeof(std::uint32_t) + ranges_.capacity() * sizeof(CellRange);
-  }
+  std::size_t bytes() const { return held_bytes(range_offset_) + held_bytes(ranges_); }
+
+  /// Adds "<owner>.range offsets" and "<owner>.ranges".
+  void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
  private:
   friend class NeighborList<D>;
@@ -152,8 +155,11 @@ class NeighborGrid {
   /// The per-cell neighbour ranges of the grid over itself (what for_each_neighbor walks).
   const CrossNeighbors<D>& own_neighbors() const { return own_neighbors_; }
 
-  /// Bytes the grid keeps (tables and sort workspace), per particle of the last update.
-  std::size_t bytes_per_particle() const;
+  /// Bytes the grid keeps (tables and sort workspace).
+  std::size_t bytes() const;
+
+  /// Adds one item per buffer of the grid ("<owner>.<buffer>"), its own range table included.
+  void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
   /// For a set sorted once that afterwards only takes part in CrossNeighbors tables (fixed
   /// walls): frees the sort workspace and the table of the grid over itself, which such a set

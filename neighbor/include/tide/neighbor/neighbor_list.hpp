@@ -4,8 +4,10 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/types.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
@@ -59,9 +61,12 @@ class NeighborList {
     }
   }
 
-  std::size_t bytes() const {
-    return bits_.capacity() * sizeof(std::uint64_t) + cell_first_word_.capacity() * sizeof(std::uint64_t) +
-           cell_words_.capacity() * sizeof(std::uint32_t);
+  std::size_t bytes() const { return held_bytes(bits_) + held_bytes(cell_first_word_) + held_bytes(cell_words_); }
+
+  /// Adds "<owner>.bits" and "<owner>.cell offsets" (first word and words per particle of each cell).
+  void add_memory(MemoryUsage& usage, const std::string& owner) const {
+    usage.add(owner + ".bits", bits_);
+    usage.add(owner + ".cell offsets", held_bytes(cell_first_word_) + held_bytes(cell_words_));
   }
 
  private:

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "tide/core/memory_usage.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/neighbor/neighbor_list.hpp"
 
@@ -59,6 +60,9 @@ class FluidWallNeighbors {
   const NeighborGrid<D>& wall_grid() const { return wall_grid_; }
   std::size_t bytes() const;
 
+  /// Adds one item per buffer of the grids, cross tables and lists.
+  void add_memory(MemoryUsage& usage) const;
+
  private:
   NeighborGrid<D> fluid_grid_;
   NeighborGrid<D> wall_grid_;
@@ -71,9 +75,20 @@ class FluidWallNeighbors {
 
 template <int D>
 std::size_t FluidWallNeighbors<D>::bytes() const {
-  return fluid_to_walls_.bytes() + walls_to_fluid_.bytes() + fluid_list_.bytes() + fluid_to_walls_list_.bytes() +
-         walls_to_fluid_list_.bytes() + fluid_grid_.bytes_per_particle() * fluid_grid_.particle_count() +
-         wall_grid_.bytes_per_particle() * wall_grid_.particle_count();
+  MemoryUsage usage;
+  add_memory(usage);
+  return usage.total();
+}
+
+template <int D>
+void FluidWallNeighbors<D>::add_memory(MemoryUsage& usage) const {
+  fluid_grid_.add_memory(usage, "fluid grid");
+  wall_grid_.add_memory(usage, "wall grid");
+  fluid_to_walls_.add_memory(usage, "fluid-wall table");
+  walls_to_fluid_.add_memory(usage, "wall-fluid table");
+  fluid_list_.add_memory(usage, "fluid list");
+  fluid_to_walls_list_.add_memory(usage, "fluid-wall list");
+  walls_to_fluid_list_.add_memory(usage, "wall-fluid list");
 }
 
 }  // namespace tide
