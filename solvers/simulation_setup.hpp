@@ -48,8 +48,8 @@ template <int D>
 ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_density, FluidFields<D>& fields,
                           const Phases* phases = nullptr);
 
-/// Wall particles sampled from the scene with the fields of WallFields (a surface velocity only
-/// when some obstacle moves), density ρ0 and pressure zero.
+/// Wall particles sampled from the scene with the fields of WallFields (a velocity only for no-slip
+/// walls, a surface velocity only when some obstacle moves), density ρ0 and pressure zero.
 template <int D>
 ParticleSet<D> make_walls(const scene::Scene& scene, Real mass, Real rest_density, WallFields<D>& fields);
 
