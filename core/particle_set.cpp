@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tide/core/parallel.hpp"
+#include "tide/core/scratch_arena.hpp"
 
 namespace tide {
 namespace {
@@ -22,11 +23,14 @@ const char* kind_name(FieldKind kind) {
   return "unknown";
 }
 
+// Gathers into the caller's scratch and copies back, so that the set keeps no second copy of any
+// field between reorders; the copy is one more streaming pass per field.
 template <class T>
-void gather(std::vector<T>& values, std::vector<T>& scratch, std::span<const Index> order) {
-  scratch.resize(order.size());
+void gather(std::vector<T>& values, std::span<std::byte> scratch_bytes, std::span<const Index> order) {
+  const std::span<T> scratch = objects_in<T>(scratch_bytes, order.size());
   for_each_particle(order.size(), [&](std::size_t i) { scratch[i] = values[order[i]]; });
-  values.swap(scratch);
+  values.resize(order.size());
+  for_each_particle(order.size(), [&](std::size_t i) { values[i] = scratch[i]; });
 }
 
 }  // namespace
@@ -127,10 +131,12 @@ ConstVectorView<D> ParticleSet<D>::operator[](VectorField field) const {
 }
 
 template <int D>
-void ParticleSet<D>::permute(std::span<const Index> order) {
+void ParticleSet<D>::permute(std::span<const Index> order, std::span<std::byte> scratch) {
   if (order.size() > size_) throw std::invalid_argument("permutation is longer than the particle set");
-  for (auto& values : reals_) gather(values, real_scratch_, order);
-  for (auto& values : indices_) gather(values, index_scratch_, order);
+  if (scratch.size() < permute_scratch_bytes(order.size()))
+    throw std::invalid_argument("permutation scratch is smaller than one field");
+  for (auto& values : reals_) gather(values, scratch, order);
+  for (auto& values : indices_) gather(values, scratch, order);
   size_ = order.size();
 }
 
@@ -140,11 +146,6 @@ std::size_t ParticleSet<D>::field_bytes() const {
   for (const auto& values : reals_) bytes += held_bytes(values);
   for (const auto& values : indices_) bytes += held_bytes(values);
   return bytes;
-}
-
-template <int D>
-std::size_t ParticleSet<D>::scratch_bytes() const {
-  return held_bytes(real_scratch_) + held_bytes(index_scratch_);
 }
 
 template <int D>
@@ -158,13 +159,6 @@ void ParticleSet<D>::add_memory(MemoryUsage& usage, const std::string& owner) co
     }
     usage.add(owner + "." + field.name, bytes);
   }
-  usage.add(owner + ".reorder scratch", scratch_bytes());
-}
-
-template <int D>
-void ParticleSet<D>::release_scratch() {
-  release_memory(real_scratch_);
-  release_memory(index_scratch_);
 }
 
 template class ParticleSet<2>;

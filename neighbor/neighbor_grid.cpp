@@ -169,11 +169,26 @@ int NeighborGrid<D>::stencil_ranges(const std::array<std::int64_t, D>& cell,
 }
 
 template <int D>
+std::size_t NeighborGrid<D>::update_scratch_bytes(std::size_t n) {
+  return 2 * ScratchArena::aligned(n * sizeof(std::uint64_t)) + 2 * ScratchArena::aligned(n * sizeof(Index));
+}
+
+template <int D>
 std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
+  return update(particles, own_arena_);
+}
+
+template <int D>
+std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles, ScratchArena& arena) {
   const std::size_t n = particles.size();
+  arena.reset(update_scratch_bytes(n));
+  PairSortWorkspace& workspace = sort_workspace_;
+  workspace.keys = arena.take<std::uint64_t>(n);
+  workspace.key_scratch = arena.take<std::uint64_t>(n);
+  workspace.order = arena.take<Index>(n);
+  workspace.order_scratch = arena.take<Index>(n);
   auto x = particles[particles.position()];
-  auto& codes = sort_workspace_.keys;
-  codes.resize(n);
+  const std::span<std::uint64_t> codes = workspace.keys;
   for_each_particle(n, [&](std::size_t i) {
     Vector<D> xi = x[i];
     for (int d = 0; d < D; ++d) {
@@ -190,7 +205,9 @@ std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
   const auto& sorted = sort_workspace_.keys;
   const std::size_t kept =
       static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), invalid_code_) - sorted.begin());
-  particles.permute(std::span<const Index>(sort_workspace_.order).first(kept));
+  // The sort's scratch keys are free now (the sort may have swapped them with the keys): each
+  // field's gather borrows them.
+  particles.permute(std::span<const Index>(workspace.order).first(kept), std::as_writable_bytes(workspace.key_scratch));
   const std::size_t removed = n - kept;
   removed_total_ += removed;
   if (removed > 0) {
@@ -200,6 +217,11 @@ std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
     log_warning(message.str());
   }
   build_cells(kept);
+  // The arena's next phase may reuse its bytes: no span into it is kept.
+  workspace.keys = {};
+  workspace.key_scratch = {};
+  workspace.order = {};
+  workspace.order_scratch = {};
   build_lookup();
   own_neighbors_.build(*this, *this);
   return removed;
@@ -283,10 +305,8 @@ std::size_t NeighborGrid<D>::bytes() const {
 
 template <int D>
 void NeighborGrid<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
-  const PairSortWorkspace& sort = sort_workspace_;
-  usage.add(owner + ".sort keys", held_bytes(sort.keys) + held_bytes(sort.key_scratch));
-  usage.add(owner + ".sort order", held_bytes(sort.order) + held_bytes(sort.order_scratch));
-  usage.add(owner + ".sort histogram", sort.histogram);
+  usage.add(owner + ".sort and reorder scratch", own_arena_.bytes());
+  usage.add(owner + ".sort histogram", sort_workspace_.histogram);
   usage.add(owner + ".particle cell", particle_cell_);
   usage.add(owner + ".cell codes and starts", held_bytes(cell_codes_) + held_bytes(cell_start_));
   usage.add(owner + ".cell lookup", held_bytes(hash_codes_) + held_bytes(hash_slots_) + held_bytes(dense_slots_));
@@ -295,7 +315,8 @@ void NeighborGrid<D>::add_memory(MemoryUsage& usage, const std::string& owner) c
 
 template <int D>
 void NeighborGrid<D>::release_update_memory() {
-  sort_workspace_ = PairSortWorkspace{};
+  own_arena_.release();
+  release_memory(sort_workspace_.histogram);
   own_neighbors_.clear(cell_codes_.size());
 }
 

@@ -20,6 +20,24 @@ constexpr std::array<std::uint64_t, 64> bit = [] {
 template <int D>
 void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x,
                             const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x) {
+  const std::size_t words = index_cells(queries, table);
+  own_bits_.resize(words);
+  bits_ = own_bits_;
+  fill(queries, query_x, table, source_x);
+}
+
+template <int D>
+void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x,
+                            const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x, ScratchArena& arena) {
+  const std::size_t words = index_cells(queries, table);
+  release_memory(own_bits_);
+  arena.reset(ScratchArena::aligned(words * sizeof(std::uint64_t)));
+  bits_ = arena.take<std::uint64_t>(words);
+  fill(queries, query_x, table, source_x);
+}
+
+template <int D>
+std::size_t NeighborList<D>::index_cells(const NeighborGrid<D>& queries, const CrossNeighbors<D>& table) {
   queries_ = &queries;
   table_ = &table;
   const std::size_t cells = queries.occupied_cells();
@@ -36,7 +54,12 @@ void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorVie
     const std::uint64_t particles = queries.cell_start_[c + 1] - queries.cell_start_[c];
     cell_first_word_[c + 1] = cell_first_word_[c] + particles * cell_words_[c];
   }
-  bits_.resize(cell_first_word_[cells]);
+  return cell_first_word_[cells];
+}
+
+template <int D>
+void NeighborList<D>::fill(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x,
+                           const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x) {
   const Real support_squared = table.support_squared_;
   for_each_particle(queries.particle_count(), [&](std::size_t i) {
     const std::uint32_t cell = queries.particle_cell_[i];

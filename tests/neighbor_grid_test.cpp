@@ -444,13 +444,16 @@ TEST(PairSort, RadixAndComparisonGiveTheSameUniqueOrder) {
   std::mt19937_64 random(11);
   std::vector<std::uint64_t> codes(200'000);
   for (auto& code : codes) code = random() % 5000 + (random() % 2 ? (std::uint64_t(1) << 40) : 0);
-  PairSortWorkspace radix, comparison;
-  radix.keys = codes;
-  comparison.keys = codes;
+  const std::size_t n = codes.size();
+  std::vector<std::uint64_t> radix_keys = codes, comparison_keys = codes, radix_key_scratch(n),
+                             comparison_key_scratch(n);
+  std::vector<Index> radix_order(n), comparison_order(n), radix_order_scratch(n), comparison_order_scratch(n);
+  PairSortWorkspace radix{radix_keys, radix_order, radix_key_scratch, radix_order_scratch, {}};
+  PairSortWorkspace comparison{comparison_keys, comparison_order, comparison_key_scratch, comparison_order_scratch, {}};
   sort_pairs(SortAlgorithm::radix, radix);
   sort_pairs(SortAlgorithm::comparison, comparison);
-  EXPECT_EQ(radix.order, comparison.order);
-  EXPECT_EQ(radix.keys, comparison.keys);
+  EXPECT_TRUE(std::ranges::equal(radix.order, comparison.order));
+  EXPECT_TRUE(std::ranges::equal(radix.keys, comparison.keys));
   for (std::size_t k = 1; k < codes.size(); ++k) {
     ASSERT_LE(radix.keys[k - 1], radix.keys[k]);
     if (radix.keys[k - 1] == radix.keys[k]) {

@@ -12,6 +12,7 @@
 
 #include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
+#include "tide/core/scratch_arena.hpp"
 #include "tide/core/types.hpp"
 #include "tide/neighbor/pair_sort.hpp"
 
@@ -123,8 +124,15 @@ class NeighborGrid {
 
   /// Wraps periodic positions, sorts the particles by cell code (one gather per field),
   /// removes particles outside the domain and rebuilds the cell table. Returns the number of
-  /// particles removed by this call.
+  /// particles removed by this call. The sort and the gather borrow their workspace
+  /// (update_scratch_bytes) from the grid's own arena, or from `arena`, which a caller shares
+  /// with what it needs only after the update (FluidWallNeighbors: the fluid's neighbour list).
   std::size_t update(ParticleSet<D>& particles);
+  std::size_t update(ParticleSet<D>& particles, ScratchArena& arena);
+
+  /// What update takes from its arena for n particles: keys and indices of the sort, each with
+  /// a scratch copy; the reorder gathers into the scratch keys.
+  static std::size_t update_scratch_bytes(std::size_t n);
 
   /// Calls f(j, x_ij, r2) for every particle j of the set last passed to `update` with
   /// r2 = |x_i − x_j|² < support², i itself included; x_ij = x_i − x_j with the minimum image
@@ -162,8 +170,9 @@ class NeighborGrid {
   void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
   /// For a set sorted once that afterwards only takes part in CrossNeighbors tables (fixed
-  /// walls): frees the sort workspace and the table of the grid over itself, which such a set
-  /// never walks. for_each_neighbor then finds nothing until the next update rebuilds both.
+  /// walls): frees the grid's own arena (the sort workspace), the sort histogram and the table
+  /// of the grid over itself, which such a set never walks. for_each_neighbor then finds nothing
+  /// until the next update rebuilds them.
   void release_update_memory();
 
  private:
@@ -193,7 +202,8 @@ class NeighborGrid {
   std::array<Vector<D>, stencil_size> shifts_;
   std::size_t removed_total_ = 0;
 
-  PairSortWorkspace sort_workspace_;
+  ScratchArena own_arena_;
+  PairSortWorkspace sort_workspace_;       // spans into the arena while update runs, empty after
   std::vector<std::uint64_t> cell_codes_;  // occupied cells in Morton order
   std::vector<Index> cell_start_;          // cell c holds sorted particles [start[c], start[c+1])
   std::vector<Index> particle_cell_;       // occupied-cell slot of each sorted particle

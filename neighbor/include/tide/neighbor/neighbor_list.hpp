@@ -4,11 +4,13 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
+#include "tide/core/scratch_arena.hpp"
 #include "tide/core/types.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 
@@ -32,6 +34,11 @@ class NeighborList {
   /// `queries` and `table` must outlive the list and stay unchanged until the next build.
   void build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x, const CrossNeighbors<D>& table,
              const ConstVectorView<D>& source_x);
+
+  /// The same with the bits in `arena` (one phase of it) instead of the list's own array: the list
+  /// is valid until the arena's next reset.
+  void build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x, const CrossNeighbors<D>& table,
+             const ConstVectorView<D>& source_x, ScratchArena& arena);
 
   /// Calls f(j, x_ij, r2) for every source neighbour j of query particle i, in the order of
   /// CrossNeighbors::for_each_in_cell, with the same x_ij = x_i − x_j (minimum image) and r2.
@@ -61,11 +68,13 @@ class NeighborList {
     }
   }
 
-  std::size_t bytes() const { return held_bytes(bits_) + held_bytes(cell_first_word_) + held_bytes(cell_words_); }
+  /// Bytes the list holds (bits in an arena are the arena's).
+  std::size_t bytes() const { return held_bytes(own_bits_) + held_bytes(cell_first_word_) + held_bytes(cell_words_); }
 
-  /// Adds "<owner>.bits" and "<owner>.cell offsets" (first word and words per particle of each cell).
+  /// Adds "<owner>.bits" (the list's own, 0 in an arena) and "<owner>.cell offsets" (first word and
+  /// words per particle of each cell).
   void add_memory(MemoryUsage& usage, const std::string& owner) const {
-    usage.add(owner + ".bits", bits_);
+    usage.add(owner + ".bits", own_bits_);
     usage.add(owner + ".cell offsets", held_bytes(cell_first_word_) + held_bytes(cell_words_));
   }
 
@@ -80,11 +89,18 @@ class NeighborList {
     return count == 64 ? value : value & ((std::uint64_t(1) << count) - 1);
   }
 
+  // Words per particle and each cell's first word; returns the words of the whole list.
+  std::size_t index_cells(const NeighborGrid<D>& queries, const CrossNeighbors<D>& table);
+  // Sets the bits of bits_ (sized by index_cells).
+  void fill(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x, const CrossNeighbors<D>& table,
+            const ConstVectorView<D>& source_x);
+
   const NeighborGrid<D>* queries_ = nullptr;
   const CrossNeighbors<D>* table_ = nullptr;
   std::vector<std::uint64_t> cell_first_word_;  // query cell c: its first particle's first word
   std::vector<std::uint32_t> cell_words_;       // query cell c: words per particle
-  std::vector<std::uint64_t> bits_;
+  std::vector<std::uint64_t> own_bits_;
+  std::span<std::uint64_t> bits_;  // own_bits_, or a span of an arena
 };
 
 extern template class NeighborList<2>;
