@@ -323,14 +323,15 @@ void NeighborGrid<D>::release_update_memory() {
 template <int D>
 void CrossNeighbors<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
   usage.add(owner + ".range offsets", range_offset_);
-  usage.add(owner + ".ranges", ranges_);
+  usage.add(owner + ".ranges", held_bytes(runs_) + held_bytes(run_shifts_));
 }
 
 template <int D>
 void CrossNeighbors<D>::clear(std::size_t query_cells) {
   range_offset_.assign(query_cells + 1, 0);
   range_offset_.shrink_to_fit();
-  release_memory(ranges_);
+  release_memory(runs_);
+  release_memory(run_shifts_);
 }
 
 template <int D>
@@ -387,10 +388,23 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
     }
   });
   for (std::size_t c = 0; c < cells; ++c) range_offset_[c + 1] += range_offset_[c];
-  ranges_.resize(range_offset_[cells]);
+  runs_.resize(range_offset_[cells]);
+  bool periodic = false;
+  for (int d = 0; d < D; ++d) periodic = periodic || sources.domain_.periodic[d];
+  if (periodic) {
+    run_shifts_.resize(runs_.size());
+  } else {
+    release_memory(run_shifts_);
+  }
   parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
-    for (std::size_t b = first; b < last; ++b)
-      std::copy(block_ranges[b].begin(), block_ranges[b].end(), ranges_.begin() + range_offset_[b * cell_block]);
+    for (std::size_t b = first; b < last; ++b) {
+      std::size_t r = range_offset_[b * cell_block];
+      for (const CellRange& range : block_ranges[b]) {
+        runs_[r] = {range.begin, range.end};
+        if (periodic) run_shifts_[r] = static_cast<std::uint8_t>(range.shift);
+        ++r;
+      }
+    }
   });
 }
 

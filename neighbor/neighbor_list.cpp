@@ -46,7 +46,7 @@ std::size_t NeighborList<D>::index_cells(const NeighborGrid<D>& queries, const C
   for_each_particle(cells, [&](std::size_t c) {
     std::uint64_t candidates = 0;
     for (std::uint32_t r = table.range_offset_[c]; r < table.range_offset_[c + 1]; ++r)
-      candidates += table.ranges_[r].end - table.ranges_[r].begin;
+      candidates += table.runs_[r].end - table.runs_[r].begin;
     cell_words_[c] = static_cast<std::uint32_t>((candidates + 63) / 64);
   });
   cell_first_word_[0] = 0;
@@ -71,7 +71,7 @@ void NeighborList<D>::fill(const NeighborGrid<D>& queries, const ConstVectorView
     std::uint64_t word = 0;
     std::uint64_t position = 0;
     for (std::uint32_t r = table.range_offset_[cell]; r < table.range_offset_[cell + 1]; ++r) {
-      const CellRange range = table.ranges_[r];
+      const CellRange range = table.range(r);
       const Vector<D> x_image = x - table.shifts_[range.shift];
       for (Index first = range.begin; first < range.end; first += 64) {
         const Index count = std::min<Index>(64, range.end - first);

@@ -44,6 +44,13 @@ struct CellRange {
   std::uint32_t shift = 0;
 };
 
+/// How a CrossNeighbors table stores a CellRange: the particle run only; the image shift is kept
+/// apart, and only on a domain with a periodic axis (elsewhere every shift is 0).
+struct SourceRun {
+  Index begin = 0;
+  Index end = 0;
+};
+
 template <int D>
 class NeighborGrid;
 template <int D>
@@ -73,7 +80,7 @@ class CrossNeighbors {
     std::array<Index, chunk> inside;
     std::array<Real, chunk> inside_r2;
     for (std::uint32_t r = range_offset_[cell]; r < range_offset_[cell + 1]; ++r) {
-      const CellRange range = ranges_[r];
+      const CellRange range = this->range(r);
       const Vector<D> x_image = x - shifts_[range.shift];
       for (Index first = range.begin; first < range.end; first += chunk) {
         const Index last = std::min<Index>(range.end, first + chunk);
@@ -96,9 +103,14 @@ class CrossNeighbors {
     }
   }
 
-  std::size_t bytes() const { return held_bytes(range_offset_) + held_bytes(ranges_); }
+  std::size_t bytes() const { return held_bytes(range_offset_) + held_bytes(runs_) + held_bytes(run_shifts_); }
 
-  /// Adds "<owner>.range offsets" and "<owner>.ranges".
+  /// Range r of the table (of all query cells, in order).
+  CellRange range(std::uint32_t r) const {
+    return {runs_[r].begin, runs_[r].end, run_shifts_.empty() ? 0u : std::uint32_t(run_shifts_[r])};
+  }
+
+  /// Adds "<owner>.range offsets" and "<owner>.ranges" (runs and, on a periodic domain, shifts).
   void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
  private:
@@ -106,7 +118,8 @@ class CrossNeighbors {
   std::array<Vector<D>, D == 2 ? 9 : 27> shifts_{};
   Real support_squared_ = 0;
   std::vector<std::uint32_t> range_offset_;  // query cell c: ranges [offset[c], offset[c+1])
-  std::vector<CellRange> ranges_;
+  std::vector<SourceRun> runs_;
+  std::vector<std::uint8_t> run_shifts_;  // empty unless the domain has a periodic axis
 };
 
 /// Uniform grid of cells at least one support radius wide, whose particles are kept sorted by

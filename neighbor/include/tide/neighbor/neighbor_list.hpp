@@ -51,7 +51,7 @@ class NeighborList {
     const Vector<D> x = query_x[i];
     std::uint64_t position = 0;  // bit of the current range's first candidate
     for (std::uint32_t r = table_->range_offset_[cell]; r < table_->range_offset_[cell + 1]; ++r) {
-      const CellRange range = table_->ranges_[r];
+      const CellRange range = table_->range(r);
       const Vector<D> x_image = x - table_->shifts_[range.shift];
       const Index length = range.end - range.begin;
       for (Index first = 0; first < length; first += 64) {
