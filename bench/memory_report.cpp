@@ -4,10 +4,12 @@
 // peak while the scene is built and the peak of the steps after the warm-up).
 //
 //   memory_report [--dimension 2|3] [--particles N] [--scheme wcsph|dfsph|iisph] [--steps K]
-//                 [--json FILE]
+//                 [--json FILE] [--allocator-default]
 //
 // Defaults: 3D, 10^6 particles, WCSPH, 25 steps (step_bench's 20 warm-up steps and 5 timed
 // ones). The table is Markdown; --json also writes the figures for scripts/performance_report.py.
+// Like the `tide` app, it first calls release_large_blocks_to_the_system(); --allocator-default
+// leaves the C allocator as it is, to see what that costs in resident memory.
 
 #include <cstddef>
 #include <cstdio>
@@ -22,6 +24,7 @@
 #include "dam_break_scenes.hpp"
 #include "process_memory.hpp"
 #include "tide/core/config.hpp"
+#include "tide/core/large_block_release.hpp"
 #include "tide/core/memory_usage.hpp"
 #include "tide/solvers/simulation.hpp"
 
@@ -37,6 +40,7 @@ struct Options {
   scene::Scheme scheme = scene::Scheme::wcsph;
   int steps = 25;
   std::string json;
+  bool allocator_default = false;  // leave the allocator's large-block threshold as it is
 };
 
 scene::Scheme parse_scheme(std::string_view name) {
@@ -49,6 +53,10 @@ Options parse(int argc, char** argv) {
   Options options;
   for (int k = 1; k < argc; ++k) {
     const std::string_view flag = argv[k];
+    if (flag == "--allocator-default") {
+      options.allocator_default = true;
+      continue;
+    }
     if (k + 1 >= argc) throw std::invalid_argument("missing value after " + std::string(flag));
     const std::string value = argv[++k];
     if (flag == "--dimension") {
@@ -103,9 +111,10 @@ Measurement measure(const Options& options) {
 void print(const Options& options, const Measurement& m) {
   const double n = double(m.fluid);
   const auto per = [&](double bytes) { return bytes / n; };
-  std::printf("%dD %s, %s, %zu fluid and %zu wall particles (%.2f per fluid particle), after %d steps\n\n",
+  std::printf("%dD %s, %s, %zu fluid and %zu wall particles (%.2f per fluid particle), after %d steps%s\n\n",
               options.dimension, std::string(tide::scheme_name(options.scheme)).c_str(), TIDE_REAL_NAME, m.fluid,
-              m.walls, double(m.walls) / n, options.steps);
+              m.walls, double(m.walls) / n, options.steps,
+              options.allocator_default ? ", C allocator left as it is" : "");
   std::printf("| item | B per fluid particle |\n|---|--:|\n");
   std::map<std::string, double> owners;
   std::string last_owner;
@@ -134,9 +143,9 @@ void write_json(const Options& options, const Measurement& m) {
   const double n = double(m.fluid);
   const auto above = [&](std::size_t bytes) { return (double(bytes) - double(m.baseline.current)) / n; };
   out << "{\n  \"dimension\": " << options.dimension << ",\n  \"scheme\": \"" << tide::scheme_name(options.scheme)
-      << "\",\n  \"real\": \"" << TIDE_REAL_NAME << "\",\n  \"steps\": " << options.steps
-      << ",\n  \"fluid\": " << m.fluid << ",\n  \"walls\": " << m.walls
-      << ",\n  \"bytes_per_particle\": " << double(m.usage.total()) / n
+      << "\",\n  \"allocator_default\": " << (options.allocator_default ? "true" : "false") << ",\n  \"real\": \""
+      << TIDE_REAL_NAME << "\",\n  \"steps\": " << options.steps << ",\n  \"fluid\": " << m.fluid
+      << ",\n  \"walls\": " << m.walls << ",\n  \"bytes_per_particle\": " << double(m.usage.total()) / n
       << ",\n  \"rss_after_build\": " << above(m.built.current) << ",\n  \"rss_peak_build\": " << above(m.built.peak)
       << ",\n  \"rss_after_steps\": " << above(m.after_steps.current)
       << ",\n  \"rss_peak_steps\": " << above(m.after_steps.peak)
@@ -156,6 +165,7 @@ void write_json(const Options& options, const Measurement& m) {
 int main(int argc, char** argv) {
   try {
     const Options options = parse(argc, argv);
+    if (!options.allocator_default) tide::release_large_blocks_to_the_system();
     const Measurement m = options.dimension == 2 ? measure<2>(options) : measure<3>(options);
     print(options, m);
     if (!options.json.empty()) write_json(options, m);

@@ -1,6 +1,6 @@
 #include "process_memory.hpp"
 
-#if defined(__GLIBC__)
+#if __has_include(<malloc.h>)
 #include <malloc.h>
 #endif
 

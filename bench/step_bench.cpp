@@ -77,6 +77,7 @@
 #include "dam_break_scenes.hpp"
 #include "process_memory.hpp"
 #include "tide/core/config.hpp"
+#include "tide/core/large_block_release.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/solvers/simulation.hpp"
@@ -315,6 +316,7 @@ void register_dam_break_runs() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tide::release_large_blocks_to_the_system();  // as the `tide` app: RSS_B/particle then follows B/particle
   const char* huge = std::getenv("TIDE_BENCH_HUGE");
   register_reference();
   register_steps<2>(false);
