@@ -23,9 +23,10 @@ namespace tide {
 ///
 /// Compact: instead of 4-byte indices (CSR, as in Cabana), each particle keeps one bit per
 /// candidate of its cell's merged ranges, set when the candidate lies inside the support. All
-/// particles of a cell share its candidates, so one offset per cell locates every particle's
-/// bits. In 3D with cells of one support radius a particle has ~216 candidates for ~29
-/// neighbours: 32 bytes per particle against 116 for an index list.
+/// particles of a cell share its candidates, so their bit strings follow each other without
+/// padding and one offset per cell locates every particle's bits. In 3D with cells of one
+/// support radius a particle has ~216 candidates for ~29 neighbours: 27 bytes per particle
+/// (32 if each string were rounded up to whole words) against 116 for an index list.
 template <int D>
 class NeighborList {
  public:
@@ -46,10 +47,10 @@ class NeighborList {
   template <class F>
   void for_each(std::size_t i, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x, F&& f) const {
     const std::uint32_t cell = queries_->particle_cell_[i];
-    const std::uint64_t words = cell_words_[cell];
-    const std::uint64_t* bits = bits_.data() + cell_first_word_[cell] + (i - queries_->cell_start_[cell]) * words;
+    const std::uint64_t* bits = bits_.data() + cell_first_word_[cell];
     const Vector<D> x = query_x[i];
-    std::uint64_t position = 0;  // bit of the current range's first candidate
+    // Bit of the current range's first candidate in the cell's string.
+    std::uint64_t position = std::uint64_t(i - queries_->cell_start_[cell]) * cell_candidates_[cell];
     for (std::uint32_t r = table_->range_offset_[cell]; r < table_->range_offset_[cell + 1]; ++r) {
       const CellRange range = table_->range(r);
       const Vector<D> x_image = x - table_->shifts_[range.shift];
@@ -69,13 +70,15 @@ class NeighborList {
   }
 
   /// Bytes the list holds (bits in an arena are the arena's).
-  std::size_t bytes() const { return held_bytes(own_bits_) + held_bytes(cell_first_word_) + held_bytes(cell_words_); }
+  std::size_t bytes() const {
+    return held_bytes(own_bits_) + held_bytes(cell_first_word_) + held_bytes(cell_candidates_);
+  }
 
   /// Adds "<owner>.bits" (the list's own, 0 in an arena) and "<owner>.cell offsets" (first word and
-  /// words per particle of each cell).
+  /// candidates of each cell).
   void add_memory(MemoryUsage& usage, const std::string& owner) const {
     usage.add(owner + ".bits", own_bits_);
-    usage.add(owner + ".cell offsets", held_bytes(cell_first_word_) + held_bytes(cell_words_));
+    usage.add(owner + ".cell offsets", held_bytes(cell_first_word_) + held_bytes(cell_candidates_));
   }
 
  private:
@@ -89,7 +92,7 @@ class NeighborList {
     return count == 64 ? value : value & ((std::uint64_t(1) << count) - 1);
   }
 
-  // Words per particle and each cell's first word; returns the words of the whole list.
+  // Candidates and first word of each cell; returns the words of the whole list.
   std::size_t index_cells(const NeighborGrid<D>& queries, const CrossNeighbors<D>& table);
   // Sets the bits of bits_ (sized by index_cells).
   void fill(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x, const CrossNeighbors<D>& table,
@@ -97,8 +100,8 @@ class NeighborList {
 
   const NeighborGrid<D>* queries_ = nullptr;
   const CrossNeighbors<D>* table_ = nullptr;
-  std::vector<std::uint64_t> cell_first_word_;  // query cell c: its first particle's first word
-  std::vector<std::uint32_t> cell_words_;       // query cell c: words per particle
+  std::vector<std::uint64_t> cell_first_word_;  // query cell c: the first word of its bit string
+  std::vector<std::uint32_t> cell_candidates_;  // query cell c: candidates, i.e. bits per particle
   std::vector<std::uint64_t> own_bits_;
   std::span<std::uint64_t> bits_;  // own_bits_, or a span of an arena
 };
