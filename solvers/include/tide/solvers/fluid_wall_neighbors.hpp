@@ -18,11 +18,13 @@ class FluidWallNeighbors {
   FluidWallNeighbors(const GridDomain<D>& domain, Real support_radius)
       : fluid_grid_(domain, support_radius), wall_grid_(domain, support_radius) {}
 
-  /// Sorts the walls once (in the shared arena); they do not move, so what only a sort needs and
+  /// Sorts the walls once; they do not move, so what only a sort needs (the arena's bytes too:
+  /// a tank can have more wall than fluid particles, and the arena would keep their size) and
   /// the walls' table over themselves (no pass walks wall-wall pairs) are freed.
   void set_walls(ParticleSet<D>& walls) {
     wall_grid_.update(walls, arena_);
     wall_grid_.release_update_memory();
+    arena_.release();
   }
 
   /// Re-sorts the fluid, relinks it with the walls (`walls` as last passed to set_walls) and
