@@ -1,6 +1,8 @@
 #include "tide/neighbor/neighbor_list.hpp"
 
 #include <array>
+#include <limits>
+#include <stdexcept>
 
 #include "tide/core/parallel.hpp"
 
@@ -49,12 +51,18 @@ std::size_t NeighborList<D>::index_cells(const NeighborGrid<D>& queries, const C
       candidates += table.runs_[r].end - table.runs_[r].begin;
     cell_candidates_[c] = candidates;
   });
-  cell_first_word_[0] = 0;
+  // 32-bit word offsets address 32 GiB of bits, far more than a machine that holds the
+  // particles can spare; a list beyond is refused rather than wrapped.
+  std::uint64_t words = 0;
   for (std::size_t c = 0; c < cells; ++c) {
+    cell_first_word_[c] = static_cast<std::uint32_t>(words);
     const std::uint64_t particles = queries.cell_start_[c + 1] - queries.cell_start_[c];
-    cell_first_word_[c + 1] = cell_first_word_[c] + (particles * cell_candidates_[c] + 63) / 64;
+    words += (particles * cell_candidates_[c] + 63) / 64;
+    if (words > std::numeric_limits<std::uint32_t>::max())
+      throw std::length_error("neighbour list: more than 2^32 words of neighbour bits");
   }
-  return cell_first_word_[cells];
+  cell_first_word_[cells] = static_cast<std::uint32_t>(words);
+  return words;
 }
 
 template <int D>

@@ -100,7 +100,7 @@ class NeighborList {
 
   const NeighborGrid<D>* queries_ = nullptr;
   const CrossNeighbors<D>* table_ = nullptr;
-  std::vector<std::uint64_t> cell_first_word_;  // query cell c: the first word of its bit string
+  std::vector<std::uint32_t> cell_first_word_;  // query cell c: the first word of its bit string
   std::vector<std::uint32_t> cell_candidates_;  // query cell c: candidates, i.e. bits per particle
   std::vector<std::uint64_t> own_bits_;
   std::span<std::uint64_t> bits_;  // own_bits_, or a span of an arena
