@@ -375,7 +375,12 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
   range_offset_.resize(cells + 1);
   range_offset_[0] = 0;
   const std::size_t blocks = (cells + cell_block - 1) / cell_block;
-  std::vector<std::vector<CellRange>> block_ranges(blocks);
+  bool periodic = false;
+  for (int d = 0; d < D; ++d) periodic = periodic || sources.domain_.periodic[d];
+  // Each block's runs (and shifts) in the table's own 8-byte (and 1-byte) form: these copies
+  // live until they are placed, and are the peak of a step above what it keeps.
+  std::vector<std::vector<SourceRun>> block_runs(blocks);
+  std::vector<std::vector<std::uint8_t>> block_shifts(periodic ? blocks : 0);
   parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
     std::array<CellRange, NeighborGrid<D>::stencil_size> stencil;
     for (std::size_t b = first; b < last; ++b) {
@@ -383,14 +388,19 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
         const auto cell = queries.cell_coordinates(c);
         const int count = near_sources(cell) ? sources.stencil_ranges(cell, stencil) : 0;
         range_offset_[c + 1] = static_cast<std::uint32_t>(count);
-        block_ranges[b].insert(block_ranges[b].end(), stencil.begin(), stencil.begin() + count);
+        std::vector<SourceRun>& runs = block_runs[b];
+        const std::size_t at = runs.size();
+        runs.resize(at + std::size_t(count));
+        for (int k = 0; k < count; ++k) runs[at + std::size_t(k)] = {stencil[k].begin, stencil[k].end};
+        if (!periodic) continue;
+        std::vector<std::uint8_t>& shifts = block_shifts[b];
+        shifts.resize(at + std::size_t(count));
+        for (int k = 0; k < count; ++k) shifts[at + std::size_t(k)] = static_cast<std::uint8_t>(stencil[k].shift);
       }
     }
   });
   for (std::size_t c = 0; c < cells; ++c) range_offset_[c + 1] += range_offset_[c];
   runs_.resize(range_offset_[cells]);
-  bool periodic = false;
-  for (int d = 0; d < D; ++d) periodic = periodic || sources.domain_.periodic[d];
   if (periodic) {
     run_shifts_.resize(runs_.size());
   } else {
@@ -398,12 +408,9 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
   }
   parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
     for (std::size_t b = first; b < last; ++b) {
-      std::size_t r = range_offset_[b * cell_block];
-      for (const CellRange& range : block_ranges[b]) {
-        runs_[r] = {range.begin, range.end};
-        if (periodic) run_shifts_[r] = static_cast<std::uint8_t>(range.shift);
-        ++r;
-      }
+      const std::size_t r = range_offset_[b * cell_block];
+      std::copy(block_runs[b].begin(), block_runs[b].end(), runs_.begin() + std::ptrdiff_t(r));
+      if (periodic) std::copy(block_shifts[b].begin(), block_shifts[b].end(), run_shifts_.begin() + std::ptrdiff_t(r));
     }
   });
 }
