@@ -11,6 +11,7 @@
 #include "run_command.hpp"
 #include "stress_command.hpp"
 #include "tide/core/config.hpp"
+#include "tide/core/large_block_release.hpp"
 #include "tide/core/parallel.hpp"
 #include "validate_command.hpp"
 
@@ -42,6 +43,7 @@ int info() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tide::release_large_blocks_to_the_system();
   CLI::App app{"TideSPH: smoothed-particle hydrodynamics. Runs scene files (docs/scenes.md)."};
   app.require_subcommand(1);
   int threads = 0;

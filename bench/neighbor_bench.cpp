@@ -42,9 +42,9 @@
 //                    pairs = Σ_i |{j : |x_i − x_j| < 2 dx}|, i itself included, counted once
 //                    before timing; it is time per iteration / pairs   (Rate | kInvert)
 //   neighbors        pairs / N, average neighbours per particle (itself included)
-//   grid_B/particle  grid.bytes_per_particle(): memory the neighbour structure adds per particle
+//   grid_B/particle  grid.bytes() / N: memory the neighbour structure holds per particle
 //                    (cell codes, sort workspace, cell table, lookup table, neighbour ranges)
-//   set_B/particle   particles.bytes_per_particle(): the particle set of the benchmark (id,
+//   set_B/particle   particles.field_bytes() / N: the particle set of the benchmark (id,
 //                    position, and in the sweep the density field)
 //   threads          tide::thread_count() inside the benchmark, to check the name
 //
@@ -180,8 +180,8 @@ void set_common_counters(benchmark::State& state, std::size_t n, std::size_t pai
   if (per_pair)
     state.counters["pair_time"] = Counter(double(pairs), Counter::kIsIterationInvariantRate | Counter::kInvert);
   state.counters["neighbors"] = Counter(double(pairs) / double(n));
-  state.counters["grid_B/particle"] = Counter(double(grid.bytes_per_particle()));
-  state.counters["set_B/particle"] = Counter(double(particles.bytes_per_particle()));
+  state.counters["grid_B/particle"] = Counter(double(grid.bytes()) / double(n));
+  state.counters["set_B/particle"] = Counter(double(particles.field_bytes()) / double(n));
   state.counters["threads"] = Counter(double(tide::thread_count()));  // what ThreadLimit gave
 }
 

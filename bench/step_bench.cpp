@@ -33,10 +33,17 @@
 //   B/particle        Simulation::bytes_per_particle(): fluid and wall fields (with their reorder
 //                     workspace) plus every neighbour structure (grids, range tables, neighbour
 //                     lists), per fluid particle
+//                     (MemoryUsage: every buffer at its capacity, what it really holds)
 //   B_fluid, B_walls, B_grids, B_lists   its parts, per fluid particle: fluid fields and wall
 //                     fields (each with the reorder workspace of ParticleSet::permute), the two
 //                     grids (sort workspace, cell tables, own range tables) and the rest
-//                     (fluid-wall range tables and the three neighbour lists)
+//                     (fluid-wall range tables and the three neighbour lists); bench/memory_report
+//                     lists every item
+//   RSS_B/particle    resident memory after the timed steps less that before the simulation was
+//                     built (VmRSS), per fluid particle: the check of B/particle against the OS
+//   peak_RSS_B/particle  the peak resident memory (VmHWM, reset after the warm-up) of the timed
+//                     steps less the same baseline: B/particle plus what a step allocates and frees.
+//                     Both are per process: filter one benchmark for a clean figure
 //   f_nbr, f_density, f_wall, f_momentum, f_solve, f_integr, f_shift
 //                     share of the step in each part, from Simulation::pass_times(): neighbour
 //                     search (sort, reorder, cell tables, neighbour lists), density (+ EOS; for the
@@ -67,7 +74,10 @@
 #include <string>
 #include <vector>
 
+#include "dam_break_scenes.hpp"
+#include "process_memory.hpp"
 #include "tide/core/config.hpp"
+#include "tide/core/large_block_release.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/solvers/simulation.hpp"
@@ -76,61 +86,11 @@
 namespace {
 
 using tide::Real;
+using tide::bench::reference_3d;
+using tide::bench::sized_dam_break;
 namespace scene = tide::scene;
 
 constexpr int warmup_steps = 20;
-
-// The shipped dam-break scene of dimension D with `k` particles across the column width (2D:
-// k x 2k particles; 3D: a cube of k^3 particles, side k x `spacing`).
-scene::Scene dam_break(int dimension, double k, double spacing_3d, scene::Scheme scheme) {
-  scene::Scene s;
-  s.source = "step_bench dam break " + std::to_string(dimension) + "D";
-  s.dimension = dimension;
-  s.walls.slip = scene::WallSlip::free_slip;
-  s.solver.alpha = 0.02;
-  s.solver.scheme = scheme;
-  s.solver.max_density_error = 0.0005;
-  scene::Vec tank{};
-  if (dimension == 2) {
-    const double a = 0.05715;
-    s.particle_spacing = a / k;
-    s.kernel = tide::KernelType::wendland_c2;
-    s.smoothing_ratio = 1.3;
-    s.walls.layers = 3;
-    s.materials.push_back({"water", 1000, 1e-6, std::nullopt, 1.5});
-    s.fluid.push_back({0, scene::Box{{0, 0, 0}, {a, 2 * a, 0}}});
-    tank = {5 * a, 3 * a, 0};
-    s.gravity = {0, -9.81, 0};
-  } else {
-    s.particle_spacing = spacing_3d;
-    s.kernel = tide::KernelType::cubic_spline;
-    s.smoothing_ratio = 1.0;
-    s.walls.layers = 2;
-    s.materials.push_back({"water", 1000, 1e-6, std::nullopt, 4.5});
-    const double side = k * spacing_3d;
-    s.fluid.push_back({0, scene::Box{{0, 0, 0}, {side, side, side}}});
-    tank = {4, 1.5, 3};
-    s.gravity = {0, 0, -9.81};
-  }
-  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, tank}, true};
-  const double wall = s.walls.layers * s.particle_spacing;
-  for (int d = 0; d < dimension; ++d) {
-    s.domain.box.min[d] = -wall;
-    s.domain.box.max[d] = tank[d] + wall;
-  }
-  s.domain.box.max[dimension - 1] += tank[dimension - 1];
-  return s;
-}
-
-// About n fluid particles: 2D k x 2k with 2k^2 = n, 3D a 1 m cube of k^3.
-scene::Scene sized_dam_break(int dimension, std::size_t n, scene::Scheme scheme) {
-  if (dimension == 2) return dam_break(2, std::round(std::sqrt(double(n) / 2)), 0, scheme);
-  const double k = std::round(std::cbrt(double(n)));
-  return dam_break(3, k, 1.0 / k, scheme);
-}
-
-// Issue 8's reference: SPlisHSPlasH's 3D dam break, 39^3 particles at 0.025 m.
-scene::Scene reference_3d(scene::Scheme scheme) { return dam_break(3, 39, 0.025, scheme); }
 
 double process_cpu_seconds() {
   rusage usage{};
@@ -159,10 +119,12 @@ std::size_t count_pairs(const tide::Simulation<D>& simulation) {
 template <int D>
 void time_steps(benchmark::State& state, const scene::Scene& s, int threads) {
   tide::ThreadLimit limit(threads);
+  const std::size_t baseline = tide::bench::resident_memory().current;
   try {
     const std::unique_ptr<tide::Simulation<D>> owner = tide::make_simulation<D>(s);
     tide::Simulation<D>& simulation = *owner;
     for (int step = 0; step < warmup_steps; ++step) simulation.step();
+    const bool peak_reset = tide::bench::reset_peak_resident_memory();
 
     const tide::PassTimes before = simulation.pass_times();
     const double time_before = simulation.time();
@@ -178,6 +140,7 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads) {
     }
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double cpu_seconds = process_cpu_seconds() - cpu_start;
+    const tide::bench::ResidentMemory resident = tide::bench::resident_memory();
     const tide::PassTimes after = simulation.pass_times();
     if (simulation.removed_total() != 0) {
       state.SkipWithError("particles left the domain");
@@ -190,17 +153,22 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads) {
     state.counters["particle-steps/s"] = Counter(fluid, Counter::kIsIterationInvariantRate);
     state.counters["ns/pair"] = Counter(1e9 * wall_seconds / (steps * pairs));
     state.counters["B/particle"] = Counter(simulation.bytes_per_particle());
-    const double fluid_fields =
-        double(simulation.fluid().bytes_per_particle()) * fluid + double(simulation.fluid().scratch_bytes());
-    const double wall_fields = double(simulation.walls().bytes_per_particle() * simulation.walls().size() +
-                                      simulation.walls().scratch_bytes());
-    const double grids =
-        double(simulation.fluid_grid().bytes_per_particle() * simulation.fluid_grid().particle_count() +
-               simulation.wall_grid().bytes_per_particle() * simulation.wall_grid().particle_count());
+    double fluid_fields = 0, wall_fields = 0, grids = 0, rest = 0;
+    const tide::MemoryUsage usage = simulation.memory_usage();
+    for (const tide::MemoryItem& item : usage.items()) {
+      const auto starts = [&](const char* prefix) { return item.name.rfind(prefix, 0) == 0; };
+      double& part = starts("fluid.")                                ? fluid_fields
+                     : starts("walls.")                              ? wall_fields
+                     : starts("fluid grid.") || starts("wall grid.") ? grids
+                                                                     : rest;
+      part += double(item.bytes);
+    }
     state.counters["B_fluid"] = Counter(fluid_fields / fluid);
     state.counters["B_walls"] = Counter(wall_fields / fluid);
     state.counters["B_grids"] = Counter(grids / fluid);
-    state.counters["B_lists"] = Counter(simulation.bytes_per_particle() - (fluid_fields + wall_fields + grids) / fluid);
+    state.counters["B_lists"] = Counter(rest / fluid);
+    state.counters["RSS_B/particle"] = Counter((double(resident.current) - double(baseline)) / fluid);
+    if (peak_reset) state.counters["peak_RSS_B/particle"] = Counter((double(resident.peak) - double(baseline)) / fluid);
     const auto share = [&](const char* name, double tide::PassTimes::*part) {
       const double f = (after.*part - before.*part) / wall_seconds;
       state.counters[name] = Counter(f);
@@ -348,6 +316,7 @@ void register_dam_break_runs() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  tide::release_large_blocks_to_the_system();  // as the `tide` app: RSS_B/particle then follows B/particle
   const char* huge = std::getenv("TIDE_BENCH_HUGE");
   register_reference();
   register_steps<2>(false);

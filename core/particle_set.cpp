@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tide/core/parallel.hpp"
+#include "tide/core/scratch_arena.hpp"
 
 namespace tide {
 namespace {
@@ -22,11 +23,14 @@ const char* kind_name(FieldKind kind) {
   return "unknown";
 }
 
+// Gathers into the caller's scratch and copies back, so that the set keeps no second copy of any
+// field between reorders; the copy is one more streaming pass per field.
 template <class T>
-void gather(std::vector<T>& values, std::vector<T>& scratch, std::span<const Index> order) {
-  scratch.resize(order.size());
+void gather(std::vector<T>& values, std::span<std::byte> scratch_bytes, std::span<const Index> order) {
+  const std::span<T> scratch = objects_in<T>(scratch_bytes, order.size());
   for_each_particle(order.size(), [&](std::size_t i) { scratch[i] = values[order[i]]; });
-  values.swap(scratch);
+  values.resize(order.size());
+  for_each_particle(order.size(), [&](std::size_t i) { values[i] = scratch[i]; });
 }
 
 }  // namespace
@@ -127,28 +131,34 @@ ConstVectorView<D> ParticleSet<D>::operator[](VectorField field) const {
 }
 
 template <int D>
-void ParticleSet<D>::permute(std::span<const Index> order) {
+void ParticleSet<D>::permute(std::span<const Index> order, std::span<std::byte> scratch) {
   if (order.size() > size_) throw std::invalid_argument("permutation is longer than the particle set");
-  for (auto& values : reals_) gather(values, real_scratch_, order);
-  for (auto& values : indices_) gather(values, index_scratch_, order);
+  if (scratch.size() < permute_scratch_bytes(order.size()))
+    throw std::invalid_argument("permutation scratch is smaller than one field");
+  for (auto& values : reals_) gather(values, scratch, order);
+  for (auto& values : indices_) gather(values, scratch, order);
   size_ = order.size();
 }
 
 template <int D>
-std::size_t ParticleSet<D>::bytes_per_particle() const {
-  return reals_.size() * sizeof(Real) + indices_.size() * sizeof(Index);
+std::size_t ParticleSet<D>::field_bytes() const {
+  std::size_t bytes = 0;
+  for (const auto& values : reals_) bytes += held_bytes(values);
+  for (const auto& values : indices_) bytes += held_bytes(values);
+  return bytes;
 }
 
 template <int D>
-std::size_t ParticleSet<D>::scratch_bytes() const {
-  return real_scratch_.capacity() * sizeof(Real) + index_scratch_.capacity() * sizeof(Index);
-}
-
-template <int D>
-void ParticleSet<D>::release_scratch() {
-  // Swapped with empty vectors: assigning {} would clear them and keep their capacity.
-  std::vector<Real>().swap(real_scratch_);
-  std::vector<Index>().swap(index_scratch_);
+void ParticleSet<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
+  for (const FieldInfo& field : fields_) {
+    std::size_t bytes = 0;
+    if (field.kind == FieldKind::index) {
+      bytes = held_bytes(indices_[field.slot]);
+    } else {
+      for (int c = 0; c < field.components; ++c) bytes += held_bytes(reals_[field.slot + std::size_t(c)]);
+    }
+    usage.add(owner + "." + field.name, bytes);
+  }
 }
 
 template class ParticleSet<2>;

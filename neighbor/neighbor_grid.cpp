@@ -169,11 +169,26 @@ int NeighborGrid<D>::stencil_ranges(const std::array<std::int64_t, D>& cell,
 }
 
 template <int D>
+std::size_t NeighborGrid<D>::update_scratch_bytes(std::size_t n) {
+  return 2 * ScratchArena::aligned(n * sizeof(std::uint64_t)) + 2 * ScratchArena::aligned(n * sizeof(Index));
+}
+
+template <int D>
 std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
+  return update(particles, own_arena_);
+}
+
+template <int D>
+std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles, ScratchArena& arena) {
   const std::size_t n = particles.size();
+  arena.reset(update_scratch_bytes(n));
+  PairSortWorkspace& workspace = sort_workspace_;
+  workspace.keys = arena.take<std::uint64_t>(n);
+  workspace.key_scratch = arena.take<std::uint64_t>(n);
+  workspace.order = arena.take<Index>(n);
+  workspace.order_scratch = arena.take<Index>(n);
   auto x = particles[particles.position()];
-  auto& codes = sort_workspace_.keys;
-  codes.resize(n);
+  const std::span<std::uint64_t> codes = workspace.keys;
   for_each_particle(n, [&](std::size_t i) {
     Vector<D> xi = x[i];
     for (int d = 0; d < D; ++d) {
@@ -190,7 +205,9 @@ std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
   const auto& sorted = sort_workspace_.keys;
   const std::size_t kept =
       static_cast<std::size_t>(std::lower_bound(sorted.begin(), sorted.end(), invalid_code_) - sorted.begin());
-  particles.permute(std::span<const Index>(sort_workspace_.order).first(kept));
+  // The sort's scratch keys are free now (the sort may have swapped them with the keys): each
+  // field's gather borrows them.
+  particles.permute(std::span<const Index>(workspace.order).first(kept), std::as_writable_bytes(workspace.key_scratch));
   const std::size_t removed = n - kept;
   removed_total_ += removed;
   if (removed > 0) {
@@ -200,6 +217,11 @@ std::size_t NeighborGrid<D>::update(ParticleSet<D>& particles) {
     log_warning(message.str());
   }
   build_cells(kept);
+  // The arena's next phase may reuse its bytes: no span into it is kept.
+  workspace.keys = {};
+  workspace.key_scratch = {};
+  workspace.order = {};
+  workspace.order_scratch = {};
   build_lookup();
   own_neighbors_.build(*this, *this);
   return removed;
@@ -248,8 +270,8 @@ void NeighborGrid<D>::build_lookup() {
   if (lookup_ == CellLookup::automatic)
     active_lookup_ = total <= dense_cells_per_particle * particle_cell_.size() ? CellLookup::dense : CellLookup::hash;
   if (active_lookup_ == CellLookup::dense) {
-    hash_codes_ = {};
-    hash_slots_ = {};
+    release_memory(hash_codes_);
+    release_memory(hash_slots_);
     dense_slots_.assign(total, no_cell);
     for_each_particle(cells, [&](std::size_t c) {
       std::size_t linear = 0;
@@ -259,7 +281,7 @@ void NeighborGrid<D>::build_lookup() {
     });
     return;
   }
-  dense_slots_ = {};
+  release_memory(dense_slots_);
   const std::size_t capacity = std::bit_ceil(std::max<std::size_t>(2 * cells, 16));
   hash_codes_.assign(capacity, invalid_code_);
   hash_slots_.resize(capacity);
@@ -275,28 +297,41 @@ void NeighborGrid<D>::build_lookup() {
 }
 
 template <int D>
-std::size_t NeighborGrid<D>::bytes_per_particle() const {
-  const std::size_t n = std::max<std::size_t>(particle_count(), 1);
-  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  const std::size_t total = bytes(sort_workspace_.keys) + bytes(sort_workspace_.order) +
-                            bytes(sort_workspace_.key_scratch) + bytes(sort_workspace_.order_scratch) +
-                            bytes(sort_workspace_.histogram) + bytes(cell_codes_) + bytes(cell_start_) +
-                            bytes(particle_cell_) + bytes(hash_codes_) + bytes(hash_slots_) + bytes(dense_slots_) +
-                            own_neighbors_.bytes();
-  return total / n;
+std::size_t NeighborGrid<D>::bytes() const {
+  MemoryUsage usage;
+  add_memory(usage, "grid");
+  return usage.total();
+}
+
+template <int D>
+void NeighborGrid<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
+  usage.add(owner + ".sort and reorder scratch", own_arena_.bytes());
+  usage.add(owner + ".sort histogram", sort_workspace_.histogram);
+  usage.add(owner + ".particle cell", particle_cell_);
+  usage.add(owner + ".cell codes and starts", held_bytes(cell_codes_) + held_bytes(cell_start_));
+  usage.add(owner + ".cell lookup", held_bytes(hash_codes_) + held_bytes(hash_slots_) + held_bytes(dense_slots_));
+  own_neighbors_.add_memory(usage, owner + ".own table");
 }
 
 template <int D>
 void NeighborGrid<D>::release_update_memory() {
-  sort_workspace_ = PairSortWorkspace{};
+  own_arena_.release();
+  release_memory(sort_workspace_.histogram);
   own_neighbors_.clear(cell_codes_.size());
+}
+
+template <int D>
+void CrossNeighbors<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
+  usage.add(owner + ".range offsets", range_offset_);
+  usage.add(owner + ".ranges", held_bytes(runs_) + held_bytes(run_shifts_));
 }
 
 template <int D>
 void CrossNeighbors<D>::clear(std::size_t query_cells) {
   range_offset_.assign(query_cells + 1, 0);
   range_offset_.shrink_to_fit();
-  std::vector<CellRange>().swap(ranges_);
+  release_memory(runs_);
+  release_memory(run_shifts_);
 }
 
 template <int D>
@@ -340,7 +375,12 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
   range_offset_.resize(cells + 1);
   range_offset_[0] = 0;
   const std::size_t blocks = (cells + cell_block - 1) / cell_block;
-  std::vector<std::vector<CellRange>> block_ranges(blocks);
+  bool periodic = false;
+  for (int d = 0; d < D; ++d) periodic = periodic || sources.domain_.periodic[d];
+  // Each block's runs (and shifts) in the table's own 8-byte (and 1-byte) form: these copies
+  // live until they are placed, and are the peak of a step above what it keeps.
+  std::vector<std::vector<SourceRun>> block_runs(blocks);
+  std::vector<std::vector<std::uint8_t>> block_shifts(periodic ? blocks : 0);
   parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
     std::array<CellRange, NeighborGrid<D>::stencil_size> stencil;
     for (std::size_t b = first; b < last; ++b) {
@@ -348,15 +388,30 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
         const auto cell = queries.cell_coordinates(c);
         const int count = near_sources(cell) ? sources.stencil_ranges(cell, stencil) : 0;
         range_offset_[c + 1] = static_cast<std::uint32_t>(count);
-        block_ranges[b].insert(block_ranges[b].end(), stencil.begin(), stencil.begin() + count);
+        std::vector<SourceRun>& runs = block_runs[b];
+        const std::size_t at = runs.size();
+        runs.resize(at + std::size_t(count));
+        for (int k = 0; k < count; ++k) runs[at + std::size_t(k)] = {stencil[k].begin, stencil[k].end};
+        if (!periodic) continue;
+        std::vector<std::uint8_t>& shifts = block_shifts[b];
+        shifts.resize(at + std::size_t(count));
+        for (int k = 0; k < count; ++k) shifts[at + std::size_t(k)] = static_cast<std::uint8_t>(stencil[k].shift);
       }
     }
   });
   for (std::size_t c = 0; c < cells; ++c) range_offset_[c + 1] += range_offset_[c];
-  ranges_.resize(range_offset_[cells]);
+  runs_.resize(range_offset_[cells]);
+  if (periodic) {
+    run_shifts_.resize(runs_.size());
+  } else {
+    release_memory(run_shifts_);
+  }
   parallel_blocks(blocks, 1, [&](std::size_t first, std::size_t last) {
-    for (std::size_t b = first; b < last; ++b)
-      std::copy(block_ranges[b].begin(), block_ranges[b].end(), ranges_.begin() + range_offset_[b * cell_block]);
+    for (std::size_t b = first; b < last; ++b) {
+      const std::size_t r = range_offset_[b * cell_block];
+      std::copy(block_runs[b].begin(), block_runs[b].end(), runs_.begin() + std::ptrdiff_t(r));
+      if (periodic) std::copy(block_shifts[b].begin(), block_shifts[b].end(), run_shifts_.begin() + std::ptrdiff_t(r));
+    }
   });
 }
 

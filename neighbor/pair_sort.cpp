@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <numeric>
+#include <stdexcept>
+#include <utility>
 
 #include "tide/core/parallel.hpp"
 
@@ -21,8 +23,6 @@ void radix_sort(PairSortWorkspace& w) {
       [](std::uint64_t a, std::uint64_t b) { return std::max(a, b); });
   const int passes = (std::bit_width(max_key) + digit_bits - 1) / digit_bits;
   const std::size_t blocks = (n + radix_block - 1) / radix_block;
-  w.key_scratch.resize(n);
-  w.order_scratch.resize(n);
   w.histogram.resize(blocks * digit_count);
 
   for (int pass = 0; pass < passes; ++pass) {
@@ -56,8 +56,8 @@ void radix_sort(PairSortWorkspace& w) {
         }
       }
     });
-    w.keys.swap(w.key_scratch);
-    w.order.swap(w.order_scratch);
+    std::swap(w.keys, w.key_scratch);
+    std::swap(w.order, w.order_scratch);
   }
 }
 
@@ -80,7 +80,8 @@ std::string_view sort_algorithm_name(SortAlgorithm algorithm) {
 
 void sort_pairs(SortAlgorithm algorithm, PairSortWorkspace& workspace) {
   const std::size_t n = workspace.keys.size();
-  workspace.order.resize(n);
+  if (workspace.order.size() != n || workspace.key_scratch.size() != n || workspace.order_scratch.size() != n)
+    throw std::invalid_argument("pair sort: the keys, order and scratch spans differ in length");
   for_each_particle(n, [&](std::size_t i) { workspace.order[i] = static_cast<Index>(i); });
   if (algorithm == SortAlgorithm::radix) {
     radix_sort(workspace);

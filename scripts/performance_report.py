@@ -61,6 +61,15 @@ def load_best(path):
     return {name: min(ms({**r, "time_unit": r.get("time_unit", "ns")}) for r in rows) for name, rows in runs.items()}
 
 
+def load_memory(results_dir, name):
+    """bench/memory_report --json output, or None."""
+    path = os.path.join(results_dir, name)
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
 def ms(row):
     scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[row["time_unit"]]
     return row["real_time"] * scale
@@ -88,11 +97,48 @@ def fmt_share(row, key):
     return f"{100 * row.get(key, 0):.1f}%"
 
 
+def write_memory(w, after, before):
+    """The itemised bytes per fluid particle of bench/memory_report, before and after issue 8's memory work."""
+    w("## Where the bytes go\n")
+    w(f"{after['dimension']}D {after['scheme'].upper()}, {after['real']}, the dam break of `step_bench` at "
+      f"{after['fluid']:,} fluid and {after['walls']:,} wall particles, after {after['steps']} steps: every buffer "
+      "the simulation keeps, at its capacity (`Simulation::memory_usage`), in bytes per fluid particle. "
+      "Reproduce: `build/bench/memory_report --particles 1000000 --json bench/results/memory_report.json` "
+      "(about a minute on 2 cores); `memory_report_before.json` is the same program on the code before the "
+      "changes below (commit f549d25, which only added the accounting).\n")
+    names = [i["name"] for i in (before or {}).get("items", [])]
+    names += [i["name"] for i in after["items"] if i["name"] not in names]
+    value = lambda report, name: next((i["bytes_per_particle"] for i in report["items"] if i["name"] == name), None)
+    cell = lambda v: "—" if v is None or v == 0 else f"{v:.1f}"
+    if before:
+        w("| item | before | after |")
+        w("|---|--:|--:|")
+    else:
+        w("| item | B per fluid particle |")
+        w("|---|--:|")
+    for name in names:
+        a = value(after, name)
+        b = value(before, name) if before else None
+        if not a and not b:
+            continue
+        w(f"| {name} | {cell(b)} | {cell(a)} |" if before else f"| {name} | {cell(a)} |")
+    total = f"**{after['bytes_per_particle']:.1f}**"
+    w(f"| **total held** | **{before['bytes_per_particle']:.1f}** | {total} |" if before else f"| **total held** | {total} |")
+    rss = lambda r, key: f"{r[key]:.1f}" if r and key in r else ""
+    for label, key in (("resident after the steps (VmRSS)", "rss_after_steps"),
+                       ("resident peak of the steps (VmHWM, reset after the build)", "rss_peak_steps"),
+                       ("freed, kept by the C allocator", "heap_free_kept")):
+        w(f"| {label} | {rss(before, key)} | {rss(after, key)} |" if before else f"| {label} | {rss(after, key)} |")
+    w("")
+
+
 def main():
     results_dir, output = sys.argv[1], sys.argv[2]
     double, context = load(os.path.join(results_dir, "step_bench_double.json"))
     single, _ = load(os.path.join(results_dir, "step_bench_float.json"))
     neighbor, _ = load(os.path.join(results_dir, "neighbor_bench_double.json"))
+    memory = load_memory(results_dir, "memory_report.json")
+    memory_before = load_memory(results_dir, "memory_report_before.json")
     figures = os.path.join(os.path.dirname(output), "performance")
     os.makedirs(figures, exist_ok=True)
     out = []
@@ -155,7 +201,14 @@ def main():
           + f" (largest deviation from 10^6: {100 * spread:.0f}%) | | {status(spread <= 0.25)} | "
           "`step_bench --benchmark_filter='BM_Step/wcsph/3D/.*threads:2'` |")
         big = dict((n, row) for n, _, row in wc3)
-        if 1_000_000 in big:
+        if memory:
+            b = memory["bytes_per_particle"]
+            w(f"| 4 | bytes per particle ≤ 160 (3D WCSPH, double, 10^6, walls and neighbour structures "
+              f"included) | {b:.0f} B held (resident: {memory['rss_after_steps']:.0f} B, peak of a step "
+              f"{memory['rss_peak_steps']:.0f} B); see [Where the bytes go](#where-the-bytes-go) | | "
+              f"{status(b <= 160)} | `memory_report --particles 1000000`; the `B/particle` counter of "
+              "`step_bench --benchmark_filter='BM_Step/wcsph/3D/N:1000000/threads:2'` |")
+        elif 1_000_000 in big:
             b = big[1_000_000]["B/particle"]
             w(f"| 4 | bytes per particle ≤ 160 (3D WCSPH, double, 10^6, walls and neighbour structures "
               f"included) | {b:.0f} B | | {status(b <= 160)} | same |")
@@ -227,6 +280,10 @@ def main():
             speedup = f"{two['particle-steps/s'] / row['particle-steps/s']:.2f}×" if two else ""
             w(f"| {name} | {ms(row):.2f} | {mega(row['particle-steps/s'])} | {speedup} |")
         w("")
+
+    # ---- Memory ---------------------------------------------------------------------------
+    if memory:
+        write_memory(w, memory, memory_before)
 
     # ---- Features ---------------------------------------------------------------------------
     feats = {}

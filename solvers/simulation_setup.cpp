@@ -171,12 +171,10 @@ template <int D>
 ParticleSet<D> make_walls(const scene::Scene& scene, Real mass, Real rest_density, WallFields<D>& fields) {
   const bool moving_walls = any_moving_wall<D>(scene);
   ParticleSet<D> walls = make_particles<D>(sample_walls<D>(scene), mass, moving_walls ? "surface_velocity" : "");
-  fields = {walls.position(),
-            walls.add_vector("velocity"),
-            walls.scalar("mass"),
-            walls.add_scalar("density"),
-            walls.add_scalar("pressure"),
-            std::nullopt};
+  fields = {
+      walls.position(), std::nullopt, walls.scalar("mass"), walls.add_scalar("density"), walls.add_scalar("pressure"),
+      std::nullopt};
+  if (scene.walls.slip == scene::WallSlip::no_slip) fields.velocity = walls.add_vector("velocity");
   if (moving_walls) fields.surface_velocity = walls.vector("surface_velocity");
   for (Real& rho : walls[fields.density]) rho = rest_density;
   return walls;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "tide/core/kernels/kernel.hpp"
+#include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
@@ -47,8 +48,8 @@ template <int D>
 ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_density, FluidFields<D>& fields,
                           const Phases* phases = nullptr);
 
-/// Wall particles sampled from the scene with the fields of WallFields (a surface velocity only
-/// when some obstacle moves), density ρ0 and pressure zero.
+/// Wall particles sampled from the scene with the fields of WallFields (a velocity only for no-slip
+/// walls, a surface velocity only when some obstacle moves), density ρ0 and pressure zero.
 template <int D>
 ParticleSet<D> make_walls(const scene::Scene& scene, Real mass, Real rest_density, WallFields<D>& fields);
 
@@ -73,15 +74,24 @@ Vector<D> hydrostatic_part(const scene::Scene& scene, Vector<D> body_force) {
   return body_force;
 }
 
-/// Bytes per fluid particle: fluid and wall fields (with their reorder workspace) plus every neighbour table.
+/// What a scheme keeps, item by item: fluid and wall fields (with their reorder workspace) and
+/// every neighbour structure, at the capacity of each buffer.
+template <int D>
+MemoryUsage memory_usage(const ParticleSet<D>& fluid, const ParticleSet<D>& walls,
+                         const FluidWallNeighbors<D>& neighbors) {
+  MemoryUsage usage;
+  fluid.add_memory(usage, "fluid");
+  walls.add_memory(usage, "walls");
+  neighbors.add_memory(usage);
+  return usage;
+}
+
+/// Bytes per fluid particle of memory_usage.
 template <int D>
 double bytes_per_particle(const ParticleSet<D>& fluid, const ParticleSet<D>& walls,
                           const FluidWallNeighbors<D>& neighbors) {
   const double fluid_count = static_cast<double>(std::max<std::size_t>(fluid.size(), 1));
-  const double fields =
-      static_cast<double>(fluid.bytes_per_particle() * fluid.size() + walls.bytes_per_particle() * walls.size() +
-                          fluid.scratch_bytes() + walls.scratch_bytes());
-  return (fields + static_cast<double>(neighbors.bytes())) / fluid_count;
+  return static_cast<double>(memory_usage<D>(fluid, walls, neighbors).total()) / fluid_count;
 }
 
 /// Six significant digits, for messages.

@@ -311,6 +311,11 @@ double Wcsph<D>::bytes_per_particle() const {
 }
 
 template <int D>
+MemoryUsage Wcsph<D>::memory_usage() const {
+  return setup::memory_usage<D>(fluid_, walls_, neighbors_);
+}
+
+template <int D>
 void Wcsph<D>::check_state() {
   const Real rho0 = eos_.rest_density();
   const Real ratio = static_cast<Real>(scene_.solver.max_density_ratio);

@@ -2,9 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <numeric>
+#include <span>
 #include <stdexcept>
 #include <vector>
+
+#include "tide/core/scratch_arena.hpp"
 
 namespace tide {
 namespace {
@@ -15,7 +20,23 @@ TEST(ParticleSet, StartsWithIdAndPositionOnly) {
   EXPECT_EQ(set.fields()[0].name, "id");
   EXPECT_EQ(set.fields()[1].name, "position");
   EXPECT_EQ(set.fields()[1].components, 3);
-  EXPECT_EQ(set.bytes_per_particle(), sizeof(Index) + 3 * sizeof(Real));
+  EXPECT_EQ(set.field_bytes(), 0u);
+  set.append(10);
+  EXPECT_EQ(set.field_bytes(), 10 * (sizeof(Index) + 3 * sizeof(Real)));
+}
+
+TEST(ParticleSet, FieldBytesCountWhatTheArraysHoldNotTheirSize) {
+  ParticleSet<3> set;
+  set.add_scalar("density");
+  set.append(1000);
+  set.append(1);  // the arrays grow geometrically: they hold more than 1001 particles
+  const std::size_t per_particle = sizeof(Index) + 4 * sizeof(Real);
+  EXPECT_GT(set.field_bytes(), set.size() * per_particle);
+  MemoryUsage usage;
+  set.add_memory(usage, "fluid");
+  ASSERT_EQ(usage.items().size(), 3u);  // id, position, density
+  EXPECT_EQ(usage.items()[1].name, "fluid.position");
+  EXPECT_EQ(usage.total(), set.field_bytes());
 }
 
 TEST(ParticleSet, AppendAssignsFreshIdsAndZeroFields) {
@@ -63,7 +84,9 @@ TEST(ParticleSet, PermuteKeepsEveryFieldConsistent) {
   std::iota(order.begin(), order.end(), Index(0));
   for (std::size_t i = 0; i < n; ++i) std::swap(order[i], order[(i * 7919) % n]);
   order.resize(n - 100);
-  set.permute(order);
+  ScratchArena arena;
+  arena.reset(ParticleSet<3>::permute_scratch_bytes(order.size()));
+  set.permute(order, arena.take<std::byte>(ParticleSet<3>::permute_scratch_bytes(order.size())));
   ASSERT_EQ(set.size(), n - 100);
   const auto ids = set[set.id()];
   const auto xs = set[set.position()];
@@ -79,22 +102,49 @@ TEST(ParticleSet, PermuteKeepsEveryFieldConsistent) {
   }
 }
 
-TEST(ParticleSet, ReorderWorkspaceIsCountedAndReleased) {
+// The set keeps no reorder workspace: permute borrows the caller's, one field wide, and refuses less.
+TEST(ParticleSet, PermuteBorrowsOneFieldOfScratchAndKeepsNone) {
   ParticleSet<2> set;
   const auto mass = set.add_scalar("mass");
+  const auto phase = set.add_index("phase");
   constexpr std::size_t n = 1000;
   set.append(n);
-  for (std::size_t i = 0; i < n; ++i) set[mass][i] = static_cast<Real>(i);
-  EXPECT_EQ(set.scratch_bytes(), 0u);
+  for (std::size_t i = 0; i < n; ++i) {
+    set[mass][i] = static_cast<Real>(i);
+    set[phase][i] = static_cast<Index>(i % 3);
+  }
+  const std::size_t held = set.field_bytes();
   std::vector<Index> reversed(n);
   for (std::size_t i = 0; i < n; ++i) reversed[i] = static_cast<Index>(n - 1 - i);
-  set.permute(reversed);
-  // One array per element type, at least n long: the old arrays swapped out by the gather.
-  EXPECT_GE(set.scratch_bytes(), n * (sizeof(Real) + sizeof(Index)));
-  set.release_scratch();
-  EXPECT_EQ(set.scratch_bytes(), 0u);
-  set.permute(reversed);  // reallocates, and the reorder is still exact
-  for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(set[mass][i], static_cast<Real>(i));
+  std::vector<Real> too_small(n / 2);
+  EXPECT_THROW(set.permute(reversed, std::as_writable_bytes(std::span<Real>(too_small))), std::invalid_argument);
+  std::vector<Real> scratch(n);
+  set.permute(reversed, std::as_writable_bytes(std::span<Real>(scratch)));
+  EXPECT_EQ(set.field_bytes(), held);
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_EQ(set[mass][i], static_cast<Real>(n - 1 - i));
+    EXPECT_EQ(set[phase][i], static_cast<Index>((n - 1 - i) % 3));
+  }
+}
+
+// A phase of the arena hands out aligned, disjoint spans; a reset ends the phase and grows the
+// storage only when asked for more than it holds.
+TEST(ScratchArena, HandsOutAlignedDisjointSpansPerPhase) {
+  ScratchArena arena;
+  EXPECT_EQ(arena.bytes(), 0u);
+  arena.reset(ScratchArena::aligned(100 * sizeof(std::uint64_t)) + ScratchArena::aligned(10 * sizeof(Index)));
+  const std::size_t held = arena.bytes();
+  const auto keys = arena.take<std::uint64_t>(100);
+  const auto order = arena.take<Index>(10);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(keys.data()) % ScratchArena::alignment, 0u);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(order.data()) % ScratchArena::alignment, 0u);
+  EXPECT_GE(static_cast<const void*>(order.data()), static_cast<const void*>(keys.data() + keys.size()));
+  EXPECT_THROW(arena.take<std::uint64_t>(held), std::length_error);
+  arena.reset(8);
+  EXPECT_EQ(arena.bytes(), held);
+  EXPECT_EQ(static_cast<void*>(arena.take<Real>(1).data()), static_cast<void*>(keys.data()));
+  arena.release();
+  EXPECT_EQ(arena.bytes(), 0u);
 }
 
 }  // namespace

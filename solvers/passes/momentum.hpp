@@ -129,7 +129,8 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
   const auto density = std::as_const(fluid)[f.density];
   const auto pressure = std::as_const(fluid)[f.pressure];
   const auto wall_x = walls[w.position];
-  const auto wall_v = walls[w.velocity];
+  // Read only for viscous (no-slip) walls, the only walls that have a velocity field.
+  const ConstVectorView<D> wall_v = w.velocity ? walls[*w.velocity] : ConstVectorView<D>{};
   const auto wall_mass = walls[w.mass];
   const auto wall_density = walls[w.density];
   const auto wall_pressure = walls[w.pressure];

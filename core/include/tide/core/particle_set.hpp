@@ -2,11 +2,13 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "tide/core/memory_usage.hpp"
 #include "tide/core/types.hpp"
 
 namespace tide {
@@ -108,20 +110,25 @@ class ParticleSet {
   ConstVectorView<D> operator[](VectorField field) const;
 
   /// Reorders every field by one gather: new[i] = old[order[i]]. `order` may be shorter than
-  /// size(); the particles it does not name are removed. Entries must be distinct.
-  void permute(std::span<const Index> order);
+  /// size(); the particles it does not name are removed. Entries must be distinct. Each field is
+  /// gathered into `scratch` and copied back, one field at a time, so the caller lends the
+  /// workspace (permute_scratch_bytes(order.size()), aligned for Real) and the set keeps none.
+  void permute(std::span<const Index> order, std::span<std::byte> scratch);
+
+  /// Bytes of scratch `permute` needs to reorder into `count` particles: one array of the widest element type.
+  static constexpr std::size_t permute_scratch_bytes(std::size_t count) {
+    return count * (sizeof(Real) > sizeof(Index) ? sizeof(Real) : sizeof(Index));
+  }
 
   /// Fields in creation order.
   const std::vector<FieldInfo>& fields() const { return fields_; }
 
-  /// Bytes of field storage per particle (all fields, all components).
-  std::size_t bytes_per_particle() const;
+  /// Bytes the field arrays hold (all fields, all components): their capacity, which can exceed
+  /// size() after appends or removals.
+  std::size_t field_bytes() const;
 
-  /// Bytes of the workspace `permute` keeps between calls (one array of each element type).
-  std::size_t scratch_bytes() const;
-
-  /// Frees that workspace, for a set that is not reordered again (the next permute reallocates).
-  void release_scratch();
+  /// Adds one item per field ("<owner>.<field>").
+  void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
  private:
   const FieldInfo* find(std::string_view name) const;
@@ -133,8 +140,6 @@ class ParticleSet {
   std::vector<FieldInfo> fields_;
   std::vector<std::vector<Real>> reals_;
   std::vector<std::vector<Index>> indices_;
-  std::vector<Real> real_scratch_;
-  std::vector<Index> index_scratch_;
   VectorField position_;
   IndexField id_;
 };

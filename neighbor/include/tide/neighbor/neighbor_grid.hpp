@@ -6,10 +6,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <string_view>
 #include <vector>
 
+#include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
+#include "tide/core/scratch_arena.hpp"
 #include "tide/core/types.hpp"
 #include "tide/neighbor/pair_sort.hpp"
 
@@ -41,6 +44,13 @@ struct CellRange {
   std::uint32_t shift = 0;
 };
 
+/// How a CrossNeighbors table stores a CellRange: the particle run only; the image shift is kept
+/// apart, and only on a domain with a periodic axis (elsewhere every shift is 0).
+struct SourceRun {
+  Index begin = 0;
+  Index end = 0;
+};
+
 template <int D>
 class NeighborGrid;
 template <int D>
@@ -70,7 +80,7 @@ class CrossNeighbors {
     std::array<Index, chunk> inside;
     std::array<Real, chunk> inside_r2;
     for (std::uint32_t r = range_offset_[cell]; r < range_offset_[cell + 1]; ++r) {
-      const CellRange range = ranges_[r];
+      const CellRange range = this->range(r);
       const Vector<D> x_image = x - shifts_[range.shift];
       for (Index first = range.begin; first < range.end; first += chunk) {
         const Index last = std::min<Index>(range.end, first + chunk);
@@ -93,16 +103,23 @@ class CrossNeighbors {
     }
   }
 
-  std::size_t bytes() const {
-    return range_offset_.capacity() * sizeof(std::uint32_t) + ranges_.capacity() * sizeof(CellRange);
+  std::size_t bytes() const { return held_bytes(range_offset_) + held_bytes(runs_) + held_bytes(run_shifts_); }
+
+  /// Range r of the table (of all query cells, in order).
+  CellRange range(std::uint32_t r) const {
+    return {runs_[r].begin, runs_[r].end, run_shifts_.empty() ? 0u : std::uint32_t(run_shifts_[r])};
   }
+
+  /// Adds "<owner>.range offsets" and "<owner>.ranges" (runs and, on a periodic domain, shifts).
+  void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
  private:
   friend class NeighborList<D>;
   std::array<Vector<D>, D == 2 ? 9 : 27> shifts_{};
   Real support_squared_ = 0;
   std::vector<std::uint32_t> range_offset_;  // query cell c: ranges [offset[c], offset[c+1])
-  std::vector<CellRange> ranges_;
+  std::vector<SourceRun> runs_;
+  std::vector<std::uint8_t> run_shifts_;  // empty unless the domain has a periodic axis
 };
 
 /// Uniform grid of cells at least one support radius wide, whose particles are kept sorted by
@@ -120,8 +137,15 @@ class NeighborGrid {
 
   /// Wraps periodic positions, sorts the particles by cell code (one gather per field),
   /// removes particles outside the domain and rebuilds the cell table. Returns the number of
-  /// particles removed by this call.
+  /// particles removed by this call. The sort and the gather borrow their workspace
+  /// (update_scratch_bytes) from the grid's own arena, or from `arena`, which a caller shares
+  /// with what it needs only after the update (FluidWallNeighbors: the fluid's neighbour list).
   std::size_t update(ParticleSet<D>& particles);
+  std::size_t update(ParticleSet<D>& particles, ScratchArena& arena);
+
+  /// What update takes from its arena for n particles: keys and indices of the sort, each with
+  /// a scratch copy; the reorder gathers into the scratch keys.
+  static std::size_t update_scratch_bytes(std::size_t n);
 
   /// Calls f(j, x_ij, r2) for every particle j of the set last passed to `update` with
   /// r2 = |x_i − x_j|² < support², i itself included; x_ij = x_i − x_j with the minimum image
@@ -152,12 +176,16 @@ class NeighborGrid {
   /// The per-cell neighbour ranges of the grid over itself (what for_each_neighbor walks).
   const CrossNeighbors<D>& own_neighbors() const { return own_neighbors_; }
 
-  /// Bytes the grid keeps (tables and sort workspace), per particle of the last update.
-  std::size_t bytes_per_particle() const;
+  /// Bytes the grid keeps (tables and sort workspace).
+  std::size_t bytes() const;
+
+  /// Adds one item per buffer of the grid ("<owner>.<buffer>"), its own range table included.
+  void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
   /// For a set sorted once that afterwards only takes part in CrossNeighbors tables (fixed
-  /// walls): frees the sort workspace and the table of the grid over itself, which such a set
-  /// never walks. for_each_neighbor then finds nothing until the next update rebuilds both.
+  /// walls): frees the grid's own arena (the sort workspace), the sort histogram and the table
+  /// of the grid over itself, which such a set never walks. for_each_neighbor then finds nothing
+  /// until the next update rebuilds them.
   void release_update_memory();
 
  private:
@@ -187,7 +215,8 @@ class NeighborGrid {
   std::array<Vector<D>, stencil_size> shifts_;
   std::size_t removed_total_ = 0;
 
-  PairSortWorkspace sort_workspace_;
+  ScratchArena own_arena_;
+  PairSortWorkspace sort_workspace_;       // spans into the arena while update runs, empty after
   std::vector<std::uint64_t> cell_codes_;  // occupied cells in Morton order
   std::vector<Index> cell_start_;          // cell c holds sorted particles [start[c], start[c+1])
   std::vector<Index> particle_cell_;       // occupied-cell slot of each sorted particle

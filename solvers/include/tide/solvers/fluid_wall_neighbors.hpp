@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "tide/core/memory_usage.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/neighbor/neighbor_list.hpp"
 
@@ -17,24 +18,27 @@ class FluidWallNeighbors {
   FluidWallNeighbors(const GridDomain<D>& domain, Real support_radius)
       : fluid_grid_(domain, support_radius), wall_grid_(domain, support_radius) {}
 
-  /// Sorts the walls once; they do not move, so the workspaces of that sort and the walls'
-  /// table over themselves (no pass walks wall-wall pairs) are freed.
+  /// Sorts the walls once; they do not move, so what only a sort needs (the arena's bytes too:
+  /// a tank can have more wall than fluid particles, and the arena would keep their size) and
+  /// the walls' table over themselves (no pass walks wall-wall pairs) are freed.
   void set_walls(ParticleSet<D>& walls) {
-    wall_grid_.update(walls);
+    wall_grid_.update(walls, arena_);
     wall_grid_.release_update_memory();
-    walls.release_scratch();
+    arena_.release();
   }
 
   /// Re-sorts the fluid, relinks it with the walls (`walls` as last passed to set_walls) and
   /// lists the neighbours; returns the particles removed. The passes' positions must stay those
-  /// of this call until the next one.
+  /// of this call until the next one. The sort and reorder workspace and the fluid–fluid list,
+  /// never alive together, share one arena: the sort ends the old list, the new list ends the
+  /// sort's workspace.
   std::size_t update_fluid(ParticleSet<D>& fluid, const ParticleSet<D>& walls) {
-    const std::size_t removed = fluid_grid_.update(fluid);
+    const std::size_t removed = fluid_grid_.update(fluid, arena_);
     fluid_to_walls_.build(fluid_grid_, wall_grid_);
     walls_to_fluid_.build(wall_grid_, fluid_grid_);
     const auto fluid_x = std::as_const(fluid)[fluid.position()];
     const auto wall_x = walls[walls.position()];
-    fluid_list_.build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x);
+    fluid_list_.build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x, arena_);
     fluid_to_walls_list_.build(fluid_grid_, fluid_x, fluid_to_walls_, wall_x);
     walls_to_fluid_list_.build(wall_grid_, wall_x, walls_to_fluid_, fluid_x);
     return removed;
@@ -59,7 +63,11 @@ class FluidWallNeighbors {
   const NeighborGrid<D>& wall_grid() const { return wall_grid_; }
   std::size_t bytes() const;
 
+  /// Adds one item per buffer of the grids, cross tables and lists.
+  void add_memory(MemoryUsage& usage) const;
+
  private:
+  ScratchArena arena_;
   NeighborGrid<D> fluid_grid_;
   NeighborGrid<D> wall_grid_;
   CrossNeighbors<D> fluid_to_walls_;
@@ -71,9 +79,21 @@ class FluidWallNeighbors {
 
 template <int D>
 std::size_t FluidWallNeighbors<D>::bytes() const {
-  return fluid_to_walls_.bytes() + walls_to_fluid_.bytes() + fluid_list_.bytes() + fluid_to_walls_list_.bytes() +
-         walls_to_fluid_list_.bytes() + fluid_grid_.bytes_per_particle() * fluid_grid_.particle_count() +
-         wall_grid_.bytes_per_particle() * wall_grid_.particle_count();
+  MemoryUsage usage;
+  add_memory(usage);
+  return usage.total();
+}
+
+template <int D>
+void FluidWallNeighbors<D>::add_memory(MemoryUsage& usage) const {
+  usage.add("shared arena.sort, reorder and fluid list bits", arena_.bytes());
+  fluid_grid_.add_memory(usage, "fluid grid");
+  wall_grid_.add_memory(usage, "wall grid");
+  fluid_to_walls_.add_memory(usage, "fluid-wall table");
+  walls_to_fluid_.add_memory(usage, "wall-fluid table");
+  fluid_list_.add_memory(usage, "fluid list");
+  fluid_to_walls_list_.add_memory(usage, "fluid-wall list");
+  walls_to_fluid_list_.add_memory(usage, "wall-fluid list");
 }
 
 }  // namespace tide

@@ -26,7 +26,8 @@ struct FluidFields {
 template <int D>
 struct WallFields {
   VectorField position;
-  VectorField velocity;  // extrapolated fluid velocity mirrored for the no-slip condition
+  std::optional<VectorField> velocity;  // extrapolated fluid velocity mirrored for the no-slip condition:
+                                        // only with no-slip walls, the only ones whose velocity a pass reads
   ScalarField mass;
   ScalarField density;
   ScalarField pressure;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
+#include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
@@ -100,6 +101,13 @@ class Simulation {
   virtual const std::vector<std::string_view>& pipeline() const = 0;
   /// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
   virtual double bytes_per_particle() const = 0;
+  /// Those bytes item by item (MemoryUsage); a scheme that does not itemise them reports one item.
+  virtual MemoryUsage memory_usage() const {
+    MemoryUsage usage;
+    usage.add("all (not itemised)",
+              static_cast<std::size_t>(bytes_per_particle() * static_cast<double>(fluid().size())));
+    return usage;
+  }
 };
 
 /// The scheme the scene's solver.scheme names, built from the scene.

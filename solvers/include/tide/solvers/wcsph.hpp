@@ -67,6 +67,7 @@ class Wcsph final : public Simulation<D> {
   /// The pairwise model's force strength s_aw between phase a and the walls; 0 without it.
   Real wall_strength(Index a) const;
   double bytes_per_particle() const override;
+  MemoryUsage memory_usage() const override;
 
  private:
   void set_hydrostatic_density();
