@@ -119,19 +119,34 @@ std::vector<OilRun> find_scenes(const fs::path& directory) {
   return runs;
 }
 
+/// A run's line: its colour by its fracture's size (the sizes of its family in order), black for
+/// oil-wet walls; dashed by its orientation.
+std::string line_style(const OilRun& run, const std::vector<OilRun>& runs) {
+  std::vector<double> sizes;
+  for (const OilRun& other : runs)
+    if (other.family == run.family) sizes.push_back(other.size);
+  std::sort(sizes.begin(), sizes.end());
+  sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
+  const auto colour = std::find(sizes.begin(), sizes.end(), run.size) - sizes.begin() + 1;
+  const int dashes = run.orientation == "rising" ? 2 : run.orientation == "falling" ? 4 : 1;
+  return (run.wetting == "oil_wet" ? std::string("linecolor rgb 'black'") : "linecolor " + std::to_string(colour)) +
+         " dashtype " + std::to_string(dashes);
+}
+
 /// Recovery against time, one line per run of `family`.
 std::string curves_script(const fs::path& png, const std::vector<OilRun>& runs, const std::string& family,
                           const std::string& title, const fs::path& output_directory) {
   std::ostringstream script;
   script << "set terminal pngcairo size 900,600 noenhanced\nset output " << validation::gnuplot_string(png.string())
          << "\nset title " << validation::gnuplot_string(title)
-         << "\nset xlabel 'time (s)'\nset ylabel 'oil recovery of the cavity'\nset yrange [0:1]\nset grid\n"
-         << "set key outside right\nset datafile separator ','\nplot ";
+         << "\nset xlabel 'time (s)'\nset ylabel 'oil recovery of the cavity'\nset yrange [-0.05:1]\nset grid\n"
+         << "set key left top font ',9'\nset datafile separator ','\nplot ";
   bool first = true;
   for (const OilRun& run : runs) {
     if (run.family != family || !run.ok) continue;
     script << (first ? "" : ", ") << validation::gnuplot_string((output_directory / run.name / "recovery.csv").string())
-           << " using 1:3 every ::1 with lines linewidth 2 title " << validation::gnuplot_string(run.label());
+           << " using 1:3 every ::1 with lines linewidth 2 " << line_style(run, runs) << " title "
+           << validation::gnuplot_string(run.label());
     first = false;
   }
   return script.str() + "\n";
@@ -143,7 +158,7 @@ std::string width_script(const fs::path& png, const std::vector<OilRun>& runs) {
   script << "set terminal pngcairo size 800,550 noenhanced\nset output " << validation::gnuplot_string(png.string())
          << "\nset title 'upper-fractured cavity: recovery at the end of the run against the fracture width'"
          << "\nset xlabel 'width of the fracture above the cavity (mm)'\nset ylabel 'oil recovery'\nset yrange "
-            "[0:1]\nset grid\nplot '-' using 1:2 with linespoints pointtype 7 linewidth 2 notitle\n";
+            "[-0.05:1]\nset grid\nplot '-' using 1:2 with linespoints pointtype 7 linewidth 2 notitle\n";
   for (const OilRun& run : runs)
     if (run.family == "upper" && run.ok) script << run.size << ' ' << run.final_recovery() << '\n';
   return script.str() + "e\n";
