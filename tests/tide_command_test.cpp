@@ -113,6 +113,21 @@ TEST_F(TideCommand, EndTimeBeforeStartIsRefused) {
   expect_refused(R"("start": 0, "end": 0.05)", R"("start": 0.1, "end": 0.05)", "/time/end", "> the start time");
 }
 
+// output.recovery of a region that holds none of the material at the start: the reader cannot
+// know, so the run refuses it once the particles exist, before any step (exit code 2).
+TEST_F(TideCommand, RecoveryFromARegionWithoutTheMaterialIsRefused) {
+  const std::string scene =
+      write_scene(R"("max": [0.1, 0.2]}}],)",
+                  R"("max": [0.1, 0.2]}}, {"material": "water", "box": {"min": [0.2, 0], "max": [0.3, 0.1]}}],
+  "output": {"recovery": {"material": "water", "region": {"min": [0.15, 0.15], "max": [0.4, 0.3]}}},)")
+          .string();
+  const CommandResult result = run_tide("run --quiet --out " + (directory_ / "out").string() + " " + scene);
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("/output/recovery/region holds no particle of material \"water\""), std::string::npos)
+      << result.output;
+  EXPECT_FALSE(fs::exists(directory_ / "out" / "recovery.csv"));
+}
+
 TEST_F(TideCommand, MissingFileIsRefused) {
   const CommandResult result = run_tide("check " + (directory_ / "nowhere.json").string());
   EXPECT_EQ(result.exit_code, 2);
