@@ -1,5 +1,5 @@
-// The `tide` command: run, check and describe TideSPH scenes, and run the validation study and
-// the stress suite.
+// The `tide` command: run, check and describe TideSPH scenes, and run the validation study, the
+// stress suite and the oil-displacement study.
 
 #include <CLI/CLI.hpp>
 
@@ -8,6 +8,7 @@
 #include <iostream>
 #include <optional>
 
+#include "oil_study_command.hpp"
 #include "run_command.hpp"
 #include "stress_command.hpp"
 #include "tide/core/config.hpp"
@@ -101,6 +102,17 @@ int main(int argc, char** argv) {
   stress->add_flag("--list", stress_options.list, "list the cases");
   stress->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
 
+  tide::app::OilStudyOptions oil_options;
+  oil_options.scenes_directory = default_scene().parent_path();
+  CLI::App* oil = app.add_subcommand(
+      "oil-study", "run the oil-displacement scenes (Zhou et al. 2010; docs/multiphase.md) and plot their recovery");
+  oil->add_option("--out", oil_options.output_directory,
+                  "directory for each run, oil_study.csv/.md and the plots (default: oil-study)");
+  oil->add_option("--scenes", oil_options.scenes_directory, "directory of the oil_*.json scenes (default: shipped)");
+  oil->add_option("--until", oil_options.until, "end time in s, overriding each scene's");
+  oil->add_flag("--reuse", oil_options.reuse, "keep the runs in --out that reached their end time");
+  oil->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
+
   CLI::App* info_command = app.add_subcommand("info", "version, precision, threads and build flags");
   info_command->add_option("--threads", threads, "number of worker threads")->check(CLI::PositiveNumber);
 
@@ -124,6 +136,7 @@ int main(int argc, char** argv) {
       return tide::app::validate(validate_options);
     }
     if (*stress) return tide::app::stress(stress_options);
+    if (*oil) return tide::app::oil_study(oil_options);
     return info();
   } catch (const std::exception& error) {
     std::cerr << "tide: error: " << error.what() << '\n';

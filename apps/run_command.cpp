@@ -4,19 +4,24 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "progress.hpp"
 #include "tide/io/frame_writer.hpp"
 #include "tide/io/probe_writer.hpp"
+#include "tide/io/recovery_writer.hpp"
 #include "tide/io/scene_reader.hpp"
 #include "tide/solvers/instability.hpp"
 #include "tide/solvers/probes.hpp"
+#include "tide/solvers/recovery.hpp"
 #include "tide/solvers/simulation.hpp"
 
 namespace tide::app {
@@ -87,41 +92,64 @@ class OutputSchedule {
   double interval_;
 };
 
-/// The scene's probes read every output.probe_interval into <out>/probes.csv; does nothing for a
-/// scene without probes.
+/// A time series read every output.probe_interval into a CSV file; does nothing without a writer.
 template <int D>
-class ProbeRecorder {
+class SeriesRecorder {
  public:
-  ProbeRecorder(const scene::Scene& scene, const std::filesystem::path& output_directory)
-      : scene_(scene),
-        writer_(output_directory / "probes.csv", scene),
-        schedule_(scene.time.start, scene.output.probe_interval) {}
+  using Reading = std::function<std::vector<double>(const Simulation<D>&)>;
 
-  bool active() const { return !scene_.probes.empty(); }
-  const io::ProbeWriter& writer() const { return writer_; }
+  SeriesRecorder(const scene::Scene& scene, std::unique_ptr<io::SeriesWriter> writer, Reading read)
+      : writer_(std::move(writer)), read_(std::move(read)), schedule_(scene.time.start, scene.output.probe_interval) {}
+
+  bool active() const { return writer_ != nullptr; }
+  const io::SeriesWriter& writer() const { return *writer_; }
 
   /// Adds a row if one is due at the simulation's time.
   void record(const Simulation<D>& simulation) {
     if (!active() || !schedule_.due(simulation.time())) return;
-    writer_.add(simulation.time(), read_probes<D>(simulation, scene_.probes));
+    writer_->add(simulation.time(), read_(simulation));
     schedule_.advance_past(simulation.time());
   }
 
   void write() const {
-    if (active()) writer_.write();
+    if (active()) writer_->write();
   }
 
  private:
-  const scene::Scene& scene_;
-  io::ProbeWriter writer_;
+  std::unique_ptr<io::SeriesWriter> writer_;
+  Reading read_;
   OutputSchedule schedule_;
 };
+
+/// The scene's probes into <out>/probes.csv, and output.recovery into <out>/recovery.csv (its
+/// initial mass measured now: std::invalid_argument when its region holds none).
+template <int D>
+std::vector<SeriesRecorder<D>> series_recorders(const scene::Scene& scene, const Simulation<D>& simulation,
+                                                const std::filesystem::path& output_directory) {
+  std::vector<SeriesRecorder<D>> recorders;
+  if (!scene.probes.empty()) {
+    recorders.emplace_back(scene, std::make_unique<io::ProbeWriter>(output_directory / "probes.csv", scene),
+                           [&scene](const Simulation<D>& s) { return read_probes<D>(s, scene.probes); });
+  }
+  if (scene.output.recovery) {
+    auto meter = std::make_shared<const RecoveryMeter<D>>(simulation, *scene.output.recovery);
+    recorders.emplace_back(
+        scene, std::make_unique<io::RecoveryWriter>(output_directory / "recovery.csv", scene, meter->initial_mass()),
+        [meter](const Simulation<D>& s) {
+          const double mass = meter->mass(s);
+          return std::vector<double>{mass, meter->recovery(mass)};
+        });
+  }
+  return recorders;
+}
 
 template <int D>
 int run(const scene::Scene& scene, const RunOptions& options, const std::filesystem::path& output_directory) {
   std::unique_ptr<Simulation<D>> simulation;
+  std::vector<SeriesRecorder<D>> series;
   try {
     simulation = make_simulation<D>(scene);
+    series = series_recorders<D>(scene, *simulation, output_directory);
   } catch (const InstabilityError& error) {
     std::cerr << "tide: " << scene.source << ": the initial state is already out of bounds: " << error.what() << '\n';
     return exit_unstable;
@@ -144,9 +172,14 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   TimeStepTally run_tally, frame_tally;
   SolveTallies run_solves, frame_solves;
   writer.write(simulation->fluid(), simulation->time(), 0);
-  ProbeRecorder<D> probes(scene, output_directory);
-  probes.record(*simulation);
-  probes.write();
+  const auto record_series = [&] {
+    for (auto& recorder : series) recorder.record(*simulation);
+  };
+  const auto write_series = [&] {
+    for (const auto& recorder : series) recorder.write();
+  };
+  record_series();
+  write_series();
   OutputSchedule frames(scene.time.start + interval, interval);
   std::filesystem::path last_frame = output_directory;
   try {
@@ -157,11 +190,11 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
       run_solves.add(report);
       frame_solves.add(report);
       const double time = simulation->time();
-      probes.record(*simulation);
+      record_series();
       if (frames.due(time) || time >= end_time) {
         last_frame = writer.write(simulation->fluid(), time, simulation->step_count(),
                                   frame_attributes(frame_tally, frame_solves));
-        probes.write();
+        write_series();
         frame_tally = {};
         frame_solves = {};
         frames.advance_past(time);
@@ -170,12 +203,12 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
     }
   } catch (const InstabilityError& error) {
     progress.finish(simulation->time(), simulation->step_count());
-    probes.write();
+    write_series();
     std::cerr << "tide: " << error.what() << "\ntide: the last good frame is " << last_frame.string() << '\n';
     return exit_unstable;
   }
   progress.finish(simulation->time(), simulation->step_count());
-  probes.write();
+  write_series();
 
   const double wall = progress.wall_seconds();
   const double rate = static_cast<double>(particles) * static_cast<double>(simulation->step_count()) / wall;
@@ -197,8 +230,9 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
       100 * times.neighbor_search / total, 100 * times.density / total, 100 * times.wall_state / total,
       100 * times.momentum / total, 100 * times.pressure_solve / total, 100 * times.integration / total);
   std::printf("  output      %zu frames, %s\n", writer.frames_written(), writer.xdmf_path().string().c_str());
-  if (probes.active())
-    std::printf("  probes      %zu rows, %s\n", probes.writer().rows(), probes.writer().path().string().c_str());
+  for (const auto& recorder : series) {
+    std::printf("  series      %zu rows, %s\n", recorder.writer().rows(), recorder.writer().path().string().c_str());
+  }
   return exit_ok;
 }
 

@@ -359,13 +359,13 @@ class SceneParser {
     scene.materials = read_materials(child(root, "materials"));
     scene.fluid = read_fluid(child(root, "fluid"), scene.materials);
     if (const Node walls = child(root, "walls"); walls.present()) read_walls(walls, scene);
-    scene.domain = read_domain(child(root, "domain"), scene.walls);
+    scene.domain = read_domain(child(root, "domain"), scene.walls, scene.materials);
     scene.gravity = default_gravity(dimension_);
     read_optional(root, "gravity", scene.gravity);
     if (const Node solver = child(root, "solver"); solver.present()) read_solver(solver, scene.solver);
     scene.time = read_time(child(root, "time"));
     scene.output.probe_interval = scene.time.output_interval;
-    if (const Node output = child(root, "output"); output.present()) read_output(output, scene.output);
+    if (const Node output = child(root, "output"); output.present()) read_output(output, scene);
     if (const Node probes = child(root, "probes"); probes.present()) scene.probes = read_probes(probes, scene.domain);
     check_geometry(scene);
     check_phases(scene);
@@ -696,7 +696,8 @@ class SceneParser {
     return obstacle;
   }
 
-  scene::Domain read_domain(const Node& node, const scene::Walls& walls) const {
+  scene::Domain read_domain(const Node& node, const scene::Walls& walls,
+                            const std::vector<scene::Material>& materials) const {
     if (!node.present()) {
       if (!walls.container) {
         fail(node,
@@ -708,13 +709,16 @@ class SceneParser {
     expect_object(node, {"min", "max", "periodic", "inflow"});
     scene::Domain domain{corners(node)};
     if (const Node periodic = child(node, "periodic"); periodic.present()) domain.periodic = flags(periodic);
-    if (const Node inflow = child(node, "inflow"); inflow.present()) domain.inflow = read_inflow(inflow, domain);
+    if (const Node inflow = child(node, "inflow"); inflow.present())
+      domain.inflow = read_inflow(inflow, domain, materials);
     return domain;
   }
 
-  /// Pseudo-periodic inflow/outflow: needs x periodic and a buffer shorter than the domain.
-  scene::Inflow read_inflow(const Node& node, const scene::Domain& domain) const {
-    expect_object(node, {"velocity", "length"});
+  /// Pseudo-periodic inflow/outflow: needs x periodic and a buffer shorter than the domain; with
+  /// `phase`, the fluid re-enters as that material.
+  scene::Inflow read_inflow(const Node& node, const scene::Domain& domain,
+                            const std::vector<scene::Material>& materials) const {
+    expect_object(node, {"velocity", "length", "phase"});
     if (!domain.periodic[0])
       fail(node, "no inflow unless the x axis is periodic (\"periodic\": [true, ...]): the outflow re-enters there");
     scene::Inflow inflow;
@@ -723,6 +727,7 @@ class SceneParser {
     inflow.length =
         number(child(node, "length"), "a number > 0 and < the domain's length along x (" + format_number(width) + ")",
                [&](double length) { return length > 0 && length < width; });
+    if (const Node phase = child(node, "phase"); phase.present()) inflow.phase = material_index(phase, materials);
     return inflow;
   }
 
@@ -841,8 +846,9 @@ class SceneParser {
     return time;
   }
 
-  void read_output(const Node& node, scene::Output& output) const {
-    expect_object(node, {"fields", "probe_interval"});
+  void read_output(const Node& node, scene::Scene& scene) const {
+    expect_object(node, {"fields", "probe_interval", "recovery"});
+    scene::Output& output = scene.output;
     if (const Node fields = child(node, "fields"); fields.present()) {
       output.fields.clear();
       for (const Node& entry : elements(fields, 1, "a non-empty array of field names")) {
@@ -850,6 +856,30 @@ class SceneParser {
       }
     }
     read_optional(node, "probe_interval", output.probe_interval, positive);
+    if (const Node recovery = child(node, "recovery"); recovery.present())
+      output.recovery = read_recovery(recovery, scene);
+  }
+
+  /// The recovery of a material from a region: a material some fluid block starts with, and a
+  /// region inside the domain.
+  scene::Recovery read_recovery(const Node& node, const scene::Scene& scene) const {
+    expect_object(node, {"material", "region"});
+    scene::Recovery recovery;
+    const Node material = child(node, "material");
+    recovery.material = material_index(material, scene.materials);
+    const auto starts_with = [&](const scene::FluidBlock& block) { return block.material == recovery.material; };
+    if (std::none_of(scene.fluid.begin(), scene.fluid.end(), starts_with))
+      fail(material, "a material that some fluid block starts with");
+    const Node region = child(node, "region");
+    recovery.region = read_box(region);
+    for (int d = 0; d < dimension_; ++d) {
+      if (recovery.region.min[d] < scene.domain.box.min[d] - tolerance() ||
+          recovery.region.max[d] > scene.domain.box.max[d] + tolerance()) {
+        fail(region, "a box inside the domain [" + format_number(scene.domain.box.min[d]) + ", " +
+                         format_number(scene.domain.box.max[d]) + "] on axis " + std::to_string(d));
+      }
+    }
+    return recovery;
   }
 
   std::vector<scene::Probe> read_probes(const Node& node, const scene::Domain& domain) const {

@@ -106,8 +106,7 @@ Real particle_mass(const scene::Scene& scene, const AnyKernel<D>& kernel, Real r
 template <int D>
 Phases make_phases(const scene::Scene& scene, const AnyKernel<D>& kernel) {
   const Real lattice_sum = std::visit([&](const auto& k) { return lattice_kernel_sum<D>(k, scene); }, kernel);
-  std::vector<bool> used(scene.materials.size(), false);
-  for (const scene::FluidBlock& block : scene.fluid) used.at(block.material) = true;
+  const std::vector<bool> used = scene::fluid_materials_used(scene);
   Phases phases;
   phases.first_fluid = static_cast<std::size_t>(std::find(used.begin(), used.end(), true) - used.begin());
   phases.lightest_density = std::numeric_limits<Real>::max();

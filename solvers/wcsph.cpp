@@ -91,6 +91,7 @@ void Wcsph<D>::build_pipeline() {
   const scene::Solver& solver = scene_.solver;
   pipeline_ = {"kick_drift"};
   if (scene_.domain.inflow) pipeline_.push_back("inflow_drift");
+  if (injects_phase()) pipeline_.push_back("inflow_phase");
   pipeline_.push_back("neighbor_search");
   if (solver.density == scene::DensityMethod::continuity) {
     pipeline_.insert(pipeline_.end(), {"continuity", "equation_of_state"});
@@ -257,6 +258,11 @@ StepReport Wcsph<D>::step() {
     });
   }
   impose_inflow(dt);
+  if (injects_phase()) {
+    const Index phase = static_cast<Index>(*scene_.domain.inflow->phase);
+    passes::inject_phase<D>(static_cast<Real>(scene_.domain.box.max[0]), phase, phases_->table[phase].mass, fluid_,
+                            fluid_fields_);
+  }
   lap(clock, pass_times_.integration);
   report.removed = neighbors_.update_fluid(fluid_, walls_);
   lap(clock, pass_times_.neighbor_search);
@@ -293,6 +299,11 @@ void Wcsph<D>::impose_inflow(Real drift_time) {
   if (!inflow) return;
   passes::impose_inflow_velocity<D>(static_cast<Real>(scene_.domain.box.min[0]), static_cast<Real>(inflow->length),
                                     static_cast<Real>(inflow->velocity), drift_time, fluid_, fluid_fields_);
+}
+
+template <int D>
+bool Wcsph<D>::injects_phase() const {
+  return phases_ && scene_.domain.inflow && scene_.domain.inflow->phase;
 }
 
 template <int D>

@@ -27,7 +27,7 @@ inline scene::Scene inflow_channel_scene(double spacing) {
   const double thickness = s.walls.layers * spacing;
   s.domain.box = {{0, -thickness, 0}, {length, gap + thickness, 0}};
   s.domain.periodic = {true, false, false};
-  s.domain.inflow = scene::Inflow{1.0, 0.15};
+  s.domain.inflow = scene::Inflow{1.0, 0.15, std::nullopt};
   s.gravity = {0, 0, 0};
   s.solver.equation_of_state = scene::EquationOfState::linear;
   s.solver.viscosity = scene::ViscosityModel::laminar;

@@ -7,8 +7,10 @@
 #include <array>
 #include <cmath>
 #include <string_view>
+#include <vector>
 
 #include "inflow_scenes.hpp"
+#include "tide/solvers/recovery.hpp"
 #include "tide/solvers/wcsph.hpp"
 
 namespace tide {
@@ -67,6 +69,61 @@ TEST(Inflow, ChannelCarriesTheBuffersMassFlux) {
   const auto& passes = simulation.pipeline();
   EXPECT_NE(std::find(passes.begin(), passes.end(), std::string_view("inflow_drift")), passes.end());
   EXPECT_NE(std::find(passes.begin(), passes.end(), std::string_view("inflow_velocity")), passes.end());
+}
+
+// Water injection (domain.inflow.phase): the channel of inflow_channel_scene with free-slip
+// plates, water (ρ0 = 1) in the buffer and oil (ρ0 = 0.8) downstream, all moving as a plug at
+// U = 1. Every step, a particle whose phase changed must have been oil, now be water with the
+// water's particle mass, and have just re-entered at the seam (within U Δt + Δx/2 of min x, the
+// farthest a particle past max x lands after the wrap); no water becomes oil. The plug carries
+// the oil across the outflow at the rate U × gap, so after t = 0.5 s the oil has lost
+// U t gap / Δx² = 200 particles (measured: 200), asserted within one column of particles (gap / Δx = 10): the
+// particles cross in columns. Mass per phase is then each phase's count times its particle mass,
+// and the oil recovery of the channel (output.recovery) the share of the oil particles that crossed.
+TEST(Inflow, InjectsItsPhaseAtTheSeamOnly) {
+  const double spacing = 1.0 / 40;
+  scene::Scene scene = test::inflow_channel_scene(spacing);
+  scene.materials.push_back({"oil", 0.8, 0.01, 10.0, std::nullopt});
+  scene.fluid.push_back({1, scene::Box{{0.15, 0, 0}, {1, 0.25, 0}}, scene::Vec{1, 0, 0}});
+  scene.domain.inflow->phase = 0;
+  scene.walls.slip = scene::WallSlip::free_slip;
+  Wcsph<2> simulation(scene);
+  const auto& fluid = simulation.fluid();
+  const auto& f = simulation.fluid_fields();
+  const std::size_t particles = fluid.size();
+  const Real water_mass = simulation.phases()->table[0].mass, oil_mass = simulation.phases()->table[1].mass;
+  const auto count_oil = [&] {
+    return static_cast<std::size_t>(std::count(fluid[f.phase].begin(), fluid[f.phase].end(), Index(1)));
+  };
+  const std::size_t initial_oil = count_oil();
+  ASSERT_EQ(initial_oil, 340u);  // x in [0.15, 1): 34 columns of 10
+  const RecoveryMeter<2> meter(simulation, scene::Recovery{1, scene.domain.box});
+  std::vector<Index> phase_of(particles);
+  const auto remember_phases = [&] {
+    for (std::size_t i = 0; i < fluid.size(); ++i) phase_of[fluid[fluid.id()][i]] = fluid[f.phase][i];
+  };
+  remember_phases();
+  std::size_t changes = 0;
+  while (simulation.time() < 0.5) {
+    const double dt = simulation.step().time_step.dt;
+    ASSERT_EQ(fluid.size(), particles);
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      const Index before = phase_of[fluid[fluid.id()][i]], now = fluid[f.phase][i];
+      EXPECT_EQ(fluid[f.mass][i], now == 0 ? water_mass : oil_mass);
+      if (before == now) continue;
+      ++changes;
+      EXPECT_EQ(before, 1u);
+      EXPECT_LT(fluid[f.position][i][0] - scene.domain.box.min[0], 1.0 * dt + spacing / 2);
+    }
+    remember_phases();
+  }
+  const double expected = 1.0 * simulation.time() * 0.25 / (spacing * spacing);
+  EXPECT_EQ(changes, initial_oil - count_oil());
+  // The oil recovered from the whole channel is the oil that crossed the outflow.
+  EXPECT_NEAR(meter.recovery(meter.mass(simulation)), static_cast<double>(changes) / initial_oil, 1e-12);
+  EXPECT_NEAR(static_cast<double>(changes), expected, 0.25 / spacing);
+  const auto& passes = simulation.pipeline();
+  EXPECT_NE(std::find(passes.begin(), passes.end(), std::string_view("inflow_phase")), passes.end());
 }
 
 }  // namespace

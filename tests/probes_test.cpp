@@ -16,6 +16,7 @@
 
 #include "hydrostatic_scene.hpp"
 #include "tide/io/probe_writer.hpp"
+#include "tide/io/recovery_writer.hpp"
 
 namespace tide {
 namespace {
@@ -96,6 +97,13 @@ TEST(Probes, ReadNothingWhereThereIsNoFluid) {
   EXPECT_EQ(values[2], 0);
 }
 
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 TEST(ProbeWriter, WritesTheHeaderAndRowsAndReplacesTheFileWhole) {
   const std::filesystem::path directory = std::filesystem::temp_directory_path() / "tide_probe_writer_test";
   std::filesystem::remove_all(directory);
@@ -108,10 +116,7 @@ TEST(ProbeWriter, WritesTheHeaderAndRowsAndReplacesTheFileWhole) {
   writer.write();
   writer.add(0.25, {2300, 0.28});
   writer.write();
-  std::ifstream in(directory / "probes.csv");
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_EQ(text.str(),
+  EXPECT_EQ(file_text(directory / "probes.csv"),
             "# TideSPH probes of scene probe test tank\n"
             "# P1: pressure (Pa) at [0.3, 0.05]\n"
             "# H1: water_height (m) above [0.15, 0]\n"
@@ -127,6 +132,26 @@ TEST(ProbeWriter, WritesTheHeaderAndRowsAndReplacesTheFileWhole) {
   }
   EXPECT_EQ(files, 1u);
   std::filesystem::remove_all(directory);
+}
+
+TEST(RecoveryWriter, WritesTheMaterialTheRegionAndTheRows) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "tide_recovery_writer_test.csv";
+  scene::Scene s = tank_scene(2);
+  s.materials.push_back({"oil", 800, 0, 10.0, std::nullopt});
+  s.output.recovery = scene::Recovery{1, {{0.1, 0.2, 0}, {0.5, 0.25, 0}}};
+  io::RecoveryWriter writer(file, s, 2.5);
+  writer.add(0, {2.5, 0});
+  writer.add(0.5, {2, 0.2});
+  EXPECT_THROW(writer.add(1, {1}), std::invalid_argument);
+  writer.write();
+  EXPECT_EQ(file_text(file),
+            "# TideSPH recovery of scene probe test tank\n"
+            "# material oil in the region [0.1, 0.2] to [0.5, 0.25]; initial mass 2.5 kg/m; recovery = 1 - mass / "
+            "initial mass\n"
+            "time,mass,recovery\n"
+            "0,2.5,0\n"
+            "0.5,2,0.2\n");
+  std::filesystem::remove(file);
 }
 
 }  // namespace

@@ -661,6 +661,46 @@ TEST(SceneReaderRefuses, AnInflowWithoutAPeriodicXAxisOrWcsph) {
                  "\"wcsph\" with a domain inflow");
 }
 
+TEST(SceneReader, AnInflowThatInjectsAPhase) {
+  json periodic = with(minimal_scene(), "/domain/periodic", json::array({true, false}));
+  periodic["materials"].push_back({{"name", "oil"}, {"rest_density", 800}, {"max_speed", 2}});
+  const json injecting = with(periodic, "/domain/inflow", json{{"velocity", 0.5}, {"length", 0.2}, {"phase", "oil"}});
+  const scene::Scene s = parse(injecting);
+  ASSERT_TRUE(s.domain.inflow && s.domain.inflow->phase);
+  EXPECT_EQ(*s.domain.inflow->phase, 1u);
+  // The injected material makes the scene multiphase although every fluid block is water.
+  EXPECT_EQ(scene::fluid_material_count(s), 2u);
+  EXPECT_EQ(*parse(with(injecting, "/domain/inflow/phase", "water")).domain.inflow->phase, 0u);
+  expect_refused(with(injecting, "/domain/inflow/phase", "air"), "/domain/inflow/phase",
+                 R"(the name of a material: "water", "oil")");
+  expect_refused(with(injecting, "/domain/inflow/phase", 1), "/domain/inflow/phase", "the name of a material");
+  // Several fluid materials need WCSPH with summation density.
+  expect_refused(with(injecting, "/solver", json{{"density", "continuity"}}), "/solver/density", "\"summation\"");
+}
+
+TEST(SceneReader, TheRecoveryOfAMaterialFromARegion) {
+  json two = minimal_scene();
+  two["materials"].push_back({{"name", "oil"}, {"rest_density", 800}, {"max_speed", 2}});
+  two["fluid"].push_back({{"material", "oil"}, {"box", {{"min", {0.5, 0}}, {"max", {1, 0.5}}}}});
+  const json recovery{{"material", "oil"}, {"region", {{"min", {0.5, 0}}, {"max", {1, 1}}}}};
+  const scene::Scene s = parse(with(two, "/output/recovery", recovery));
+  ASSERT_TRUE(s.output.recovery);
+  EXPECT_EQ(s.output.recovery->material, 1u);
+  EXPECT_EQ(s.output.recovery->region.max[1], 1);
+  EXPECT_FALSE(parse(two).output.recovery);
+  expect_refused(with(two, "/output/recovery/material", "air"), "/output/recovery/material", "the name of a material");
+  json unused = minimal_scene();
+  unused["materials"].push_back({{"name", "oil"}, {"rest_density", 800}, {"max_speed", 2}});
+  expect_refused(with(unused, "/output/recovery", recovery), "/output/recovery/material",
+                 "a material that some fluid block starts with");
+  expect_refused(with(with(two, "/output/recovery", recovery), "/output/recovery/region/max/1", 1.5),
+                 "/output/recovery/region", "a box inside the domain [0, 1] on axis 1");
+  expect_refused(with(with(two, "/output/recovery", recovery), "/output/recovery/region/max/0", 0.4),
+                 "/output/recovery/region/max/0", "a number > min[0] (0.5)");
+  expect_refused(with(with(two, "/output/recovery", recovery), "/output/recovery/colour", 1), "/output/recovery/colour",
+                 R"(one of the keys "material", "region")");
+}
+
 TEST(SceneReaderRefuses, NeitherDomainNorContainer) {
   expect_refused(without(without(full_2d_scene(), "/domain"), "/walls/container"), "/domain",
                  "only a scene with a wall container");

@@ -48,16 +48,6 @@ std::vector<Series> plot_series(std::span<const StudyRun> runs) {
   return series;
 }
 
-// A gnuplot single-quoted string: only the quote itself is special, written twice.
-std::string gnuplot_string(std::string_view text) {
-  std::string result = "'";
-  for (const char c : text) {
-    if (c == '\'') result += '\'';
-    result += c;
-  }
-  return result + "'";
-}
-
 // Metrics are dimensionless unless their name ends in a unit (case.hpp's Metric).
 std::string metric_axis_label(std::string_view metric) {
   static constexpr std::array<std::pair<std::string_view, std::string_view>, 5> units{
@@ -165,11 +155,27 @@ void run_gnuplot(const fs::path& script) {
 }
 
 fs::path draw(const fs::path& png, const Case& study_case, const std::vector<Series>& series, Abscissa abscissa) {
+  draw_png(png, [&](const fs::path& output) { return plot_script(output, study_case, series, abscissa); });
+  return png;
+}
+
+}  // namespace
+
+std::string gnuplot_string(std::string_view text) {
+  std::string result = "'";
+  for (const char c : text) {
+    if (c == '\'') result += '\'';
+    result += c;
+  }
+  return result + "'";
+}
+
+void draw_png(const fs::path& png, const std::function<std::string(const fs::path&)>& script_for) {
   fs::path partial = png;
   partial += ".tmp";
   fs::path script = png;
   script.replace_extension(".gp");
-  detail::write_text_file(script, plot_script(partial, study_case, series, abscissa));
+  detail::write_text_file(script, script_for(partial));
   try {
     run_gnuplot(script);
   } catch (const std::runtime_error&) {
@@ -182,10 +188,7 @@ fs::path draw(const fs::path& png, const Case& study_case, const std::vector<Ser
     throw std::runtime_error("gnuplot wrote no image for " + png.string());
   }
   fs::rename(partial, png);
-  return png;
 }
-
-}  // namespace
 
 bool gnuplot_available() {
   const char* path = std::getenv("PATH");

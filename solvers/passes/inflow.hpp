@@ -32,4 +32,21 @@ void impose_inflow_velocity(Real lower, Real length, Real velocity, Real drift_t
   });
 }
 
+/// Injection of one phase through a pseudo-periodic channel (domain.inflow.phase): every particle
+/// at or beyond `upper` (the domain's max x) after the drift, which the neighbour search is about
+/// to wrap into the inflow buffer, re-enters as phase `phase` with that phase's mass `mass` (the
+/// water flooding of Zhou et al. 2010). The mass of each phase therefore changes only by the
+/// particles that cross the outflow, by the difference of the two phases' particle masses.
+template <int D>
+void inject_phase(Real upper, Index phase, Real mass, ParticleSet<D>& fluid, const FluidFields<D>& f) {
+  const auto x = std::as_const(fluid)[f.position];
+  auto phases = fluid[f.phase];
+  auto masses = fluid[f.mass];
+  for_each_particle(fluid.size(), [&](std::size_t i) {
+    if (!(x[i][0] >= upper)) return;
+    phases[i] = phase;
+    masses[i] = mass;
+  });
+}
+
 }  // namespace tide::passes

@@ -5,6 +5,7 @@
 // sets and a pipeline from it. All quantities are SI. Vectors always hold three numbers; a 2D
 // scene uses the first two.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -101,9 +102,11 @@ struct Walls {
 
 /// Pseudo-periodic inflow/outflow along x (a periodic axis): fluid leaving at max x re-enters at
 /// min x, where the particles within `length` of the domain's min x move at `velocity` along x.
+/// With `phase`, every particle that re-enters becomes that material (water injected into oil).
 struct Inflow {
-  double velocity = 0;  // m/s
-  double length = 0;    // m, the inflow buffer's extent along x
+  double velocity = 0;               // m/s
+  double length = 0;                 // m, the inflow buffer's extent along x
+  std::optional<std::size_t> phase;  // index into Scene::materials of the injected fluid
 };
 
 /// The region particles may occupy; a particle leaving it on a closed axis is removed.
@@ -186,9 +189,18 @@ struct Time {
 inline constexpr std::array<std::string_view, 8> output_field_names{"position",     "velocity", "density", "pressure",
                                                                     "acceleration", "mass",     "id",      "phase"};
 
+/// The recovery of one fluid from a region (docs/scenes.md, "output.recovery"): the share of the
+/// mass of `material` in `region` at the start that is no longer there, 1 − M(t)/M(0), the oil
+/// recovery of a cavity (Zhou et al. 2010).
+struct Recovery {
+  std::size_t material = 0;  // index into Scene::materials
+  Box region;
+};
+
 struct Output {
   std::vector<std::string> fields{"position", "velocity", "density", "pressure"};
   double probe_interval = 0.01;  // s between probe rows; the reader sets time.output_interval when the file has none
+  std::optional<Recovery> recovery;  // written to recovery.csv every probe_interval
 };
 
 /// What a probe measures (docs/scenes.md, "probes"): the pressure at its position, or the height
@@ -218,18 +230,21 @@ struct Scene {
   std::vector<Probe> probes;
 };
 
-/// The number of distinct materials the fluid blocks use: more than one makes the scene
-/// multiphase (a phase index per particle, the number-density formulation).
-inline std::size_t fluid_material_count(const Scene& scene) {
+/// Per material, whether the fluid uses it: a fluid block starts with it, or the inflow injects it.
+inline std::vector<bool> fluid_materials_used(const Scene& scene) {
   std::vector<bool> used(scene.materials.size(), false);
-  std::size_t count = 0;
-  for (const FluidBlock& block : scene.fluid) {
-    if (block.material < used.size() && !used[block.material]) {
-      used[block.material] = true;
-      ++count;
-    }
-  }
-  return count;
+  for (const FluidBlock& block : scene.fluid)
+    if (block.material < used.size()) used[block.material] = true;
+  if (scene.domain.inflow && scene.domain.inflow->phase && *scene.domain.inflow->phase < used.size())
+    used[*scene.domain.inflow->phase] = true;
+  return used;
+}
+
+/// The number of distinct materials the fluid uses (fluid_materials_used): more than one makes
+/// the scene multiphase (a phase index per particle, the number-density formulation).
+inline std::size_t fluid_material_count(const Scene& scene) {
+  const std::vector<bool> used = fluid_materials_used(scene);
+  return static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
 }
 
 }  // namespace tide::scene

@@ -21,7 +21,7 @@ struct Phase {
 /// material index is the phase index), and which of them colours the interface.
 struct Phases {
   std::vector<Phase> table;
-  std::size_t first_fluid = 0;  // the first material in `materials` that a fluid block uses
+  std::size_t first_fluid = 0;  // the first material in `materials` that the fluid uses (scene::fluid_materials_used)
   Real lightest_density = 0;    // of the materials the fluid uses
   Real densest_density = 0;
   Real fastest_sound = 0;

@@ -79,6 +79,8 @@ class Wcsph final : public Simulation<D> {
   /// The inflow buffer (domain.inflow): its particles at the inflow velocity, moved as if they
   /// had drifted at it over `drift_time`; nothing without an inflow.
   void impose_inflow(Real drift_time);
+  /// Whether the inflow injects a phase (domain.inflow.phase in a multiphase scene).
+  bool injects_phase() const;
   void check_state();
   /// What bound the last time step, for an instability message: a step above its stable limit
   /// is a common cause.

@@ -4,8 +4,10 @@
 // and the markdown page (docs/validation.md) that `tide validate` writes.
 
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tide/validation/case.hpp"
@@ -56,6 +58,15 @@ void write_orders_csv(const std::filesystem::path& path, std::span<const Converg
 
 /// Whether a `gnuplot` executable is on the PATH.
 bool gnuplot_available();
+
+/// Draws `png` by running gnuplot on the script that `script` returns for an output file (a
+/// temporary beside `png`, renamed to it once complete). The script is kept beside `png` (.gp)
+/// only when gnuplot fails. Throws std::runtime_error when gnuplot is missing, fails or writes
+/// no image.
+void draw_png(const std::filesystem::path& png, const std::function<std::string(const std::filesystem::path&)>& script);
+
+/// A gnuplot single-quoted string: only the quote itself is special, written twice.
+std::string gnuplot_string(std::string_view text);
 
 /// The figures of one case, drawn by gnuplot into `directory`: `<case>.png`, the primary error
 /// (metrics[0]) against wall seconds on log–log axes, one line per scheme/kernel with each point
