@@ -1,7 +1,10 @@
 #include "tide/neighbor/neighbor_list.hpp"
 
+#include <algorithm>
 #include <array>
-#include <limits>
+#include <atomic>
+#include <bit>
+#include <cstring>
 #include <stdexcept>
 
 #include "tide/core/parallel.hpp"
@@ -20,70 +23,55 @@ constexpr std::array<std::uint64_t, 64> bit = [] {
 }  // namespace
 
 template <int D>
+void NeighborList<D>::IndexArray::reserve_more(std::size_t more) {
+  if (size + more <= capacity) return;
+  const std::size_t grown = std::max(2 * capacity, size + more);
+  auto larger = std::make_unique_for_overwrite<std::uint32_t[]>(grown);
+  if (size > 0) std::memcpy(larger.get(), data.get(), size * sizeof(std::uint32_t));
+  data = std::move(larger);
+  capacity = grown;
+}
+
+template <int D>
 void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x,
                             const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x) {
-  const std::size_t words = index_cells(queries, table);
-  own_bits_.resize(words);
-  bits_ = own_bits_;
-  fill(queries, query_x, table, source_x);
-}
-
-template <int D>
-void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x,
-                            const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x, ScratchArena& arena) {
-  const std::size_t words = index_cells(queries, table);
-  release_memory(own_bits_);
-  arena.reset(ScratchArena::aligned(words * sizeof(std::uint64_t)));
-  bits_ = arena.take<std::uint64_t>(words);
-  fill(queries, query_x, table, source_x);
-}
-
-template <int D>
-std::size_t NeighborList<D>::index_cells(const NeighborGrid<D>& queries, const CrossNeighbors<D>& table) {
   queries_ = &queries;
   table_ = &table;
   const std::size_t cells = queries.occupied_cells();
-  cell_candidates_.resize(cells);
-  cell_first_word_.resize(cells + 1);
-  for_each_particle(cells, [&](std::size_t c) {
-    std::uint32_t candidates = 0;
-    for (std::uint32_t r = table.range_offset_[c]; r < table.range_offset_[c + 1]; ++r)
-      candidates += table.runs_[r].end - table.runs_[r].begin;
-    cell_candidates_[c] = candidates;
+  span_.resize(queries.particle_count());
+  const std::size_t blocks = (cells + cells_per_block - 1) / cells_per_block;
+  blocks_.resize(blocks);
+  std::atomic<bool> beyond_index_bits = false;
+  for_each_particle(blocks, [&](std::size_t block) {
+    const std::size_t first_cell = block * cells_per_block;
+    const std::size_t last_cell = std::min(cells, first_cell + cells_per_block);
+    for (std::size_t c = first_cell; c < last_cell; ++c)
+      for (std::uint32_t r = table.range_offset_[c]; r < table.range_offset_[c + 1]; ++r)
+        if (table.runs_[r].end > index_mask + Index(1)) beyond_index_bits = true;
+    if (!beyond_index_bits) fill_block(first_cell, last_cell, query_x, source_x, blocks_[block]);
   });
-  // 32-bit word offsets address 32 GiB of bits, far more than a machine that holds the
-  // particles can spare; a list beyond is refused rather than wrapped.
-  std::uint64_t words = 0;
-  for (std::size_t c = 0; c < cells; ++c) {
-    cell_first_word_[c] = static_cast<std::uint32_t>(words);
-    const std::uint64_t particles = queries.cell_start_[c + 1] - queries.cell_start_[c];
-    words += (particles * cell_candidates_[c] + 63) / 64;
-    if (words > std::numeric_limits<std::uint32_t>::max())
-      throw std::length_error("neighbour list: more than 2^32 words of neighbour bits");
-  }
-  cell_first_word_[cells] = static_cast<std::uint32_t>(words);
-  return words;
+  if (beyond_index_bits) throw std::length_error("neighbour list: more than 2^27 source particles");
 }
 
 template <int D>
-void NeighborList<D>::fill(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x,
-                           const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x) {
+void NeighborList<D>::fill_block(std::size_t first_cell, std::size_t last_cell, const ConstVectorView<D>& query_x,
+                                 const ConstVectorView<D>& source_x, IndexArray& out) {
+  const NeighborGrid<D>& queries = *queries_;
+  const CrossNeighbors<D>& table = *table_;
   const Real support_squared = table.support_squared_;
-  // One cell per task: its particles' bit strings follow each other without padding, so a word
-  // can hold the end of one and the start of the next, and only the cell's task writes it.
-  for_each_particle(queries.occupied_cells(), [&](std::size_t cell) {
-    std::uint64_t* out = bits_.data() + cell_first_word_[cell];
-    std::uint64_t word = 0;
-    std::uint64_t position = 0;  // bit of the cell's string being written
+  const bool periodic = table.periodic();
+  out.size = 0;
+  for (std::size_t cell = first_cell; cell < last_cell; ++cell) {
     for (Index i = queries.cell_start_[cell]; i < queries.cell_start_[cell + 1]; ++i) {
       const Vector<D> x = query_x[i];
-      // Blocks of up to 64 candidates, one bit each, in a loop the compiler vectorises over the
-      // SoA positions (a compare and an OR reduction, no branch: most candidates fail the test,
-      // unpredictably).
+      const std::size_t first_entry = out.size;
       for (std::uint32_t r = table.range_offset_[cell]; r < table.range_offset_[cell + 1]; ++r) {
         const CellRange range = table.range(r);
         const Vector<D> x_image = x - table.shifts_[range.shift];
+        const std::uint32_t shift = periodic ? std::uint32_t(range.shift) << index_bits : 0;
         for (Index first = range.begin; first < range.end; first += 64) {
+          // Up to 64 candidates, one bit each, in a loop the compiler vectorises over the SoA
+          // positions (most candidates fail the test, unpredictably).
           const Index count = std::min<Index>(64, range.end - first);
           std::array<const Real*, D> source;
           for (int d = 0; d < D; ++d) source[d] = source_x.component[d] + first;
@@ -93,18 +81,40 @@ void NeighborList<D>::fill(const NeighborGrid<D>& queries, const ConstVectorView
             for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source[d][k];
             mask |= squared_norm<D>(xij) < support_squared ? bit[k] : 0;
           }
-          const unsigned offset = static_cast<unsigned>(position & 63);
-          word |= mask << offset;
-          if (offset + count >= 64) {
-            out[position >> 6] = word;
-            word = offset == 0 ? 0 : mask >> (64 - offset);
+          // Eight entries per round whatever the count, the surplus overwritten by what follows:
+          // a mask rarely holds more than eight neighbours, so the loop ends where the predictor
+          // expects, where a loop over the set bits would not.
+          out.reserve_more(64);
+          std::uint32_t* const entry = out.data.get() + out.size;
+          const std::uint32_t base = shift | first;
+          const int set = std::popcount(mask);
+          for (int written = 0; written < set; written += 8) {
+            for (int k = 0; k < 8; ++k) {
+              entry[written + k] = base + static_cast<std::uint32_t>(std::countr_zero(mask));
+              mask &= mask - 1;
+            }
           }
-          position += count;
+          out.size += static_cast<std::size_t>(set);
         }
       }
+      span_[i] = {static_cast<std::uint32_t>(first_entry), static_cast<std::uint32_t>(out.size - first_entry)};
     }
-    if ((position & 63) != 0) out[position >> 6] = word;
-  });
+  }
+}
+
+template <int D>
+std::size_t NeighborList<D>::bytes() const {
+  MemoryUsage usage;
+  add_memory(usage, "");
+  return usage.total();
+}
+
+template <int D>
+void NeighborList<D>::add_memory(MemoryUsage& usage, const std::string& owner) const {
+  std::size_t indices = held_bytes(blocks_);
+  for (const IndexArray& block : blocks_) indices += block.capacity * sizeof(std::uint32_t);
+  usage.add(owner + ".indices", indices);
+  usage.add(owner + ".spans", held_bytes(span_));
 }
 
 template class NeighborList<2>;

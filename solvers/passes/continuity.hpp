@@ -47,20 +47,32 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
     const Vector<D> v_i = v[i];
     const Real rho_i = density[i];
     Real sum = 0;
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      if (j == i) return;
-      const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
-      sum += mass[j] * (v_i - v[j]).dot(grad_w);
-      if (!diffusion) return;
-      const Real rho_j = density[j];
-      const Real hydrostatic =
-          diffusion->eos.density(rest_pressure - rest_density * diffusion->gravity.dot(x_ij)) - rest_density;
-      sum += diffusion_scale * 2 * (rho_j - rho_i - hydrostatic) * (-x_ij.dot(grad_w)) / (r2 + Real(0.01) * h * h) *
-             (mass[j] / rho_j);
-    });
-    neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
-      const Vector<D> v_ib = w.surface_velocity ? Vector<D>(v_i - surface_velocity[b]) : v_i;
-      sum += wall_mass[b] * v_ib.dot(kernel.gradient(x_ib, std::sqrt(r2)));
+    if (diffusion) {
+      neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
+        if (j == i) return;
+        const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
+        sum += mass[j] * (v_i - v[j]).dot(grad_w);
+        const Real rho_j = density[j];
+        const Real hydrostatic =
+            diffusion->eos.density(rest_pressure - rest_density * diffusion->gravity.dot(x_ij)) - rest_density;
+        sum += diffusion_scale * 2 * (rho_j - rho_i - hydrostatic) * (-x_ij.dot(grad_w)) / (r2 + Real(0.01) * h * h) *
+               (mass[j] / rho_j);
+      });
+    } else {
+      // Without a branch, so that accumulate() vectorises it; the pair i–i adds an exact zero.
+      neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
+        accumulate(run, sum, [&](int k) {
+          const Index j = run.index[k];
+          return mass[j] * (v_i - v[j]).dot(kernel.gradient(run.offset(k), std::sqrt(run.r2[k])));
+        });
+      });
+    }
+    neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+      accumulate(run, sum, [&](int k) {
+        const Index b = run.index[k];
+        const Vector<D> v_ib = w.surface_velocity ? Vector<D>(v_i - surface_velocity[b]) : v_i;
+        return wall_mass[b] * v_ib.dot(kernel.gradient(run.offset(k), std::sqrt(run.r2[k])));
+      });
     });
     rate[i] = sum;
   });

@@ -34,10 +34,12 @@ void density_summation(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
                                        [&](Index, const Vector<D>&, Real r2) { sum += kernel.value(std::sqrt(r2)); });
       sum *= mass[i];
     } else {
-      neighbors.for_each_fluid_neighbor(
-          i, x, [&](Index j, const Vector<D>&, Real r2) { sum += mass[j] * kernel.value(std::sqrt(r2)); });
-      neighbors.for_each_wall_neighbor(
-          i, x, wall_x, [&](Index b, const Vector<D>&, Real r2) { sum += wall_mass[b] * kernel.value(std::sqrt(r2)); });
+      neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
+        accumulate(run, sum, [&](int k) { return mass[run.index[k]] * kernel.value(std::sqrt(run.r2[k])); });
+      });
+      neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+        accumulate(run, sum, [&](int k) { return wall_mass[run.index[k]] * kernel.value(std::sqrt(run.r2[k])); });
+      });
     }
     density[i] = sum;
     then_each(i, sum);

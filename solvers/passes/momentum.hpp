@@ -3,6 +3,8 @@
 // Acceleration of every fluid particle: pressure, viscosity, artificial stress and body force in
 // one gather pass.
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -53,8 +55,9 @@ inline Vector<D> viscous_term(const ViscositySettings& s, Real m_j, Real rho_i, 
   const Real h = s.smoothing_length;
   const Real regularised_r2 = r2 + Real(0.01) * h * h;
   if constexpr (Model == scene::ViscosityModel::artificial) {
-    const Real v_dot_x = v_ij.dot(x_ij);
-    if (v_dot_x >= 0) return Vector<D>::Zero();
+    // Only approaching pairs (v_ij·x_ij < 0) are damped; μ = 0, hence Π = 0, for the others,
+    // taken without a branch: about half the pairs approach, unpredictably.
+    const Real v_dot_x = std::min(v_ij.dot(x_ij), Real(0));
     const Real mu = h * v_dot_x / regularised_r2;
     const Real pi = (-s.alpha * s.sound_speed * mu + s.beta * mu * mu) / (Real(0.5) * (rho_i + rho_j));
     return (-m_j * pi) * grad_w;
@@ -156,13 +159,11 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
       inverse_mass_i = 1 / mass[i];
       volume_i = mass[i] / rho_i;
       eta_i = phases->dynamic_viscosity[phases->phase[i]];
-    }
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      if (j == i) return;
-      const Real rho_j = density[j];
-      const Real r = std::sqrt(r2);
-      const Vector<D> grad_w = kernel.gradient(x_ij, r);
-      if constexpr (Multiphase) {
+      neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
+        if (j == i) return;
+        const Real rho_j = density[j];
+        const Real r = std::sqrt(r2);
+        const Vector<D> grad_w = kernel.gradient(x_ij, r);
         const Real volume_j = mass[j] / rho_j;
         const Real vi2 = volume_i * volume_i, vj2 = volume_j * volume_j;
         if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + pressure[j] * vj2)) * grad_w;
@@ -173,20 +174,15 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
         } else {
           a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
         }
-      } else {
-        if constexpr (WithPressure) a -= (mass[j] * pressure_term(pressure[j] / (rho_j * rho_j), r)) * grad_w;
-        a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
+      });
+      if (!WithPressure && !settings.walls_viscous) {
+        acceleration.set(i, a);
+        return;
       }
-    });
-    if (!WithPressure && !settings.walls_viscous) {
-      acceleration.set(i, a);
-      return;
-    }
-    neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
-      const Real rho_b = wall_density[b];
-      const Real r = std::sqrt(r2);
-      const Vector<D> grad_w = kernel.gradient(x_ib, r);
-      if constexpr (Multiphase) {
+      neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
+        const Real rho_b = wall_density[b];
+        const Real r = std::sqrt(r2);
+        const Vector<D> grad_w = kernel.gradient(x_ib, r);
         // The wall takes the viscosity of the fluid particle beside it.
         const Real vb2 = phases->wall_volume * phases->wall_volume;
         const Real vi2 = volume_i * volume_i;
@@ -198,12 +194,55 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
         } else {
           a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
         }
-      } else {
-        if constexpr (WithPressure) a -= (wall_mass[b] * pressure_term(wall_pressure[b] / (rho_b * rho_b), r)) * grad_w;
-        if (settings.walls_viscous)
-          a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
+      });
+    } else {
+      // The pressure and viscous terms of a run's pairs in a loop without branches (vectorised,
+      // the neighbours' fields gathered), then applied pair by pair in the list's order, as a
+      // walk would: a −= pressure term, a += viscous term. The pair i–i gives exact zeros.
+      std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
+      const auto apply = [&](const NeighborRun<D>& run, bool viscous) {
+        for (int k = 0; k < run.count; ++k) {
+          if constexpr (WithPressure) {
+            for (int d = 0; d < D; ++d) a[d] -= pressure_terms[d][k];
+          }
+          if (viscous) {
+            for (int d = 0; d < D; ++d) a[d] += viscous_terms[d][k];
+          }
+        }
+      };
+      const auto store = [](std::array<std::array<Real, NeighborRun<D>::capacity>, D>& terms, int k,
+                            const Vector<D>& t) {
+        for (int d = 0; d < D; ++d) terms[d][k] = t[d];
+      };
+      // One run of fluid or wall neighbours (walls with their extrapolated p and ρ), viscous or not.
+      const auto add_run = [&](const NeighborRun<D>& run, std::span<const Real> masses, std::span<const Real> densities,
+                               std::span<const Real> pressures, const ConstVectorView<D>& velocities, bool viscous) {
+        for (int k = 0; k < run.count; ++k) {
+          const Index j = run.index[k];
+          const Vector<D> x_ij = run.offset(k);
+          const Real r = std::sqrt(run.r2[k]);
+          const Real rho_j = densities[j];
+          const Vector<D> grad_w = kernel.gradient(x_ij, r);
+          if constexpr (WithPressure)
+            store(pressure_terms, k, (masses[j] * pressure_term(pressures[j] / (rho_j * rho_j), r)) * grad_w);
+          if (viscous) {
+            store(viscous_terms, k,
+                  detail::viscous_term<D, Model>(settings, masses[j], rho_i, rho_j, v_i - velocities[j], x_ij,
+                                                 run.r2[k], grad_w));
+          }
+        }
+        apply(run, viscous);
+      };
+      neighbors.for_each_fluid_run(i, x,
+                                   [&](const NeighborRun<D>& run) { add_run(run, mass, density, pressure, v, true); });
+      if (!WithPressure && !settings.walls_viscous) {
+        acceleration.set(i, a);
+        return;
       }
-    });
+      neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+        add_run(run, wall_mass, wall_density, wall_pressure, wall_v, settings.walls_viscous);
+      });
+    }
     acceleration.set(i, a);
   });
 }

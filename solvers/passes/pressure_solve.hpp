@@ -74,15 +74,21 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Real rho_i = density[i];
     const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
+    // Without a branch, so that accumulate() vectorises it; the pair i–i adds an exact zero.
+    const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a, std::span<const Real> masses,
+                                   std::span<const Real> densities, std::span<const Real> pressures) {
+      accumulate(run, a, [&](int k) {
+        const Index j = run.index[k];
+        const Real rho_j = densities[j];
+        return Vector<D>((-masses[j] * (p_over_rho2_i + pressures[j] / (rho_j * rho_j))) *
+                         kernel.gradient(run.offset(k), std::sqrt(run.r2[k])));
+      });
+    };
     Vector<D> a = Vector<D>::Zero();
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      if (j == i) return;
-      const Real rho_j = density[j];
-      a -= (mass[j] * (p_over_rho2_i + pressure[j] / (rho_j * rho_j))) * kernel.gradient(x_ij, std::sqrt(r2));
-    });
-    neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
-      const Real rho_b = wall_density[b];
-      a -= (wall_mass[b] * (p_over_rho2_i + wall_pressure[b] / (rho_b * rho_b))) * kernel.gradient(x_ib, std::sqrt(r2));
+    neighbors.for_each_fluid_run(i, x,
+                                 [&](const NeighborRun<D>& run) { pressure_push(run, a, mass, density, pressure); });
+    neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+      pressure_push(run, a, wall_mass, wall_density, wall_pressure);
     });
     v.set(i, predicted[i] + dt * a);
   });

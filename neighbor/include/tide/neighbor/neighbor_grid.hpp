@@ -105,6 +105,9 @@ class CrossNeighbors {
 
   std::size_t bytes() const { return held_bytes(range_offset_) + held_bytes(runs_) + held_bytes(run_shifts_); }
 
+  /// Whether a range can have an image shift (the domain has a periodic axis).
+  bool periodic() const { return !run_shifts_.empty(); }
+
   /// Range r of the table (of all query cells, in order).
   CellRange range(std::uint32_t r) const {
     return {runs_[r].begin, runs_[r].end, run_shifts_.empty() ? 0u : std::uint32_t(run_shifts_[r])};

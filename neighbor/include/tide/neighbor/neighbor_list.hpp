@@ -1,18 +1,19 @@
 #pragma once
 
 #include <algorithm>
-#include <bit>
+#include <array>
 #include <cstddef>
 #include <cstdint>
-#include <span>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
-#include "tide/core/scratch_arena.hpp"
 #include "tide/core/types.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/neighbor/neighbor_run.hpp"
 
 namespace tide {
 
@@ -21,89 +22,119 @@ namespace tide {
 /// (Verlet 1967), so it is exact and the passes see the same neighbours in the same order as the
 /// cell walk of CrossNeighbors, which keeps the sums bitwise identical.
 ///
-/// Compact: instead of 4-byte indices (CSR, as in Cabana), each particle keeps one bit per
-/// candidate of its cell's merged ranges, set when the candidate lies inside the support. All
-/// particles of a cell share its candidates, so their bit strings follow each other without
-/// padding and one offset per cell locates every particle's bits. In 3D with cells of one
-/// support radius a particle has ~216 candidates for ~29 neighbours: 27 bytes per particle
-/// (32 if each string were rounded up to whole words) against 116 for an index list.
+/// The candidates of a cell's merged ranges (~216 for ~29 neighbours in 3D with cells of one
+/// support radius) are tested 64 at a time in a loop the compiler vectorises (a compare and an
+/// OR into a bit mask, no branch), and each mask is decoded at once into 4-byte indices (CSR, as
+/// in Cabana). The indices of a block of cells are written by one task into the block's own
+/// array, so no task needs another's counts first. A list of bits per candidate (1 bit per
+/// candidate against 32 per neighbour) cost the passes a mispredicted branch per range and word,
+/// which kept their pair loops from overlapping and vectorising (docs/performance.md).
 template <int D>
 class NeighborList {
  public:
-  /// Marks, for every particle of `queries` (positions `query_x`), which candidates of `table`
-  /// (built from `queries` to a source grid whose positions are `source_x`) are neighbours.
+  /// Lists, for every particle of `queries` (positions `query_x`), the candidates of `table`
+  /// (built from `queries` to a source grid whose positions are `source_x`) inside the support.
   /// `queries` and `table` must outlive the list and stay unchanged until the next build.
   void build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x, const CrossNeighbors<D>& table,
              const ConstVectorView<D>& source_x);
-
-  /// The same with the bits in `arena` (one phase of it) instead of the list's own array: the list
-  /// is valid until the arena's next reset.
-  void build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x, const CrossNeighbors<D>& table,
-             const ConstVectorView<D>& source_x, ScratchArena& arena);
 
   /// Calls f(j, x_ij, r2) for every source neighbour j of query particle i, in the order of
   /// CrossNeighbors::for_each_in_cell, with the same x_ij = x_i − x_j (minimum image) and r2.
   /// The positions must be those of the last build.
   template <class F>
   void for_each(std::size_t i, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x, F&& f) const {
-    const std::uint32_t cell = queries_->particle_cell_[i];
-    const std::uint64_t* bits = bits_.data() + cell_first_word_[cell];
     const Vector<D> x = query_x[i];
-    // Bit of the current range's first candidate in the cell's string.
-    std::uint64_t position = std::uint64_t(i - queries_->cell_start_[cell]) * cell_candidates_[cell];
-    for (std::uint32_t r = table_->range_offset_[cell]; r < table_->range_offset_[cell + 1]; ++r) {
-      const CellRange range = table_->range(r);
-      const Vector<D> x_image = x - table_->shifts_[range.shift];
-      const Index length = range.end - range.begin;
-      for (Index first = 0; first < length; first += 64) {
-        std::uint64_t word = extract(bits, position + first, std::min<Index>(64, length - first));
-        while (word != 0) {
-          const Index j = range.begin + first + static_cast<Index>(std::countr_zero(word));
-          word &= word - 1;
-          Vector<D> xij;
-          for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source_x.component[d][j];
-          f(j, xij, squared_norm<D>(xij));
+    const std::uint32_t* entry = entries(i);
+    const std::uint32_t* const end = entry + span_[i].count;
+    if (!table_->periodic()) {
+      for (; entry != end; ++entry) call(*entry, x, source_x, f);
+      return;
+    }
+    for (; entry != end; ++entry) call(*entry & index_mask, x - table_->shifts_[*entry >> index_bits], source_x, f);
+  }
+
+  /// Calls f(run) for the neighbours of query particle i in runs of up to NeighborRun::capacity,
+  /// in the order of for_each.
+  template <class F>
+  void for_each_run(std::size_t i, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x, F&& f) const {
+    const Vector<D> x = query_x[i];
+    const std::uint32_t* const first_entry = entries(i);
+    const int total = static_cast<int>(span_[i].count);
+    NeighborRun<D> run;
+    for (int first = 0; first < total; first += NeighborRun<D>::capacity) {
+      run.count = std::min(NeighborRun<D>::capacity, total - first);
+      const std::uint32_t* const entry = first_entry + first;
+      if (table_->periodic()) {
+        for (int k = 0; k < run.count; ++k) {
+          const Index j = entry[k] & index_mask;
+          const Vector<D> x_image = x - table_->shifts_[entry[k] >> index_bits];
+          run.index[k] = j;
+          for (int d = 0; d < D; ++d) run.x_ij[d][k] = x_image[d] - source_x.component[d][j];
+        }
+      } else {
+        for (int k = 0; k < run.count; ++k) {
+          const Index j = entry[k];
+          run.index[k] = j;
+          for (int d = 0; d < D; ++d) run.x_ij[d][k] = x[d] - source_x.component[d][j];
         }
       }
-      position += length;
+      for (int k = 0; k < run.count; ++k) {
+        Real r2 = 0;
+        for (int d = 0; d < D; ++d) r2 += run.x_ij[d][k] * run.x_ij[d][k];
+        run.r2[k] = r2;
+      }
+      f(std::as_const(run));
     }
   }
 
-  /// Bytes the list holds (bits in an arena are the arena's).
-  std::size_t bytes() const {
-    return held_bytes(own_bits_) + held_bytes(cell_first_word_) + held_bytes(cell_candidates_);
-  }
+  /// Bytes the list holds.
+  std::size_t bytes() const;
 
-  /// Adds "<owner>.bits" (the list's own, 0 in an arena) and "<owner>.cell offsets" (first word and
-  /// candidates of each cell).
-  void add_memory(MemoryUsage& usage, const std::string& owner) const {
-    usage.add(owner + ".bits", own_bits_);
-    usage.add(owner + ".cell offsets", held_bytes(cell_first_word_) + held_bytes(cell_candidates_));
-  }
+  /// Adds "<owner>.indices" (every block's array, at capacity) and "<owner>.spans" (each
+  /// particle's first entry and count).
+  void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
  private:
-  // `count` (1..64) bits of the particle's bit string from bit `position` on.
-  static std::uint64_t extract(const std::uint64_t* bits, std::uint64_t position, Index count) {
-    const std::uint64_t word = position >> 6;
-    const unsigned offset = static_cast<unsigned>(position & 63);
-    std::uint64_t value = bits[word] >> offset;
-    // The bits continue in the next word only when they are still this particle's.
-    if (offset != 0 && offset + count > 64) value |= bits[word + 1] << (64 - offset);
-    return count == 64 ? value : value & ((std::uint64_t(1) << count) - 1);
+  // Source indices take the low bits of an entry, the image shift (on a periodic domain) the rest;
+  // build() refuses a source set the low bits cannot number.
+  static constexpr int index_bits = 27;
+  static constexpr std::uint32_t index_mask = (std::uint32_t(1) << index_bits) - 1;
+  // Query cells per block; fixed, so the layout does not depend on the thread count.
+  static constexpr std::size_t cells_per_block = 64;
+
+  // The indices of one block of cells, grown without initialising (a mask's decoding writes up to
+  // 64 entries past the count before the count is known).
+  struct IndexArray {
+    std::unique_ptr<std::uint32_t[]> data;
+    std::size_t size = 0;
+    std::size_t capacity = 0;
+    // Makes room for `more` entries past size.
+    void reserve_more(std::size_t more);
+  };
+  struct Span {
+    std::uint32_t first = 0;  // in the block's array
+    std::uint32_t count = 0;
+  };
+
+  const std::uint32_t* entries(std::size_t i) const {
+    return blocks_[queries_->particle_cell_[i] / cells_per_block].data.get() + span_[i].first;
   }
 
-  // Candidates and first word of each cell; returns the words of the whole list.
-  std::size_t index_cells(const NeighborGrid<D>& queries, const CrossNeighbors<D>& table);
-  // Sets the bits of bits_ (sized by index_cells).
-  void fill(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x, const CrossNeighbors<D>& table,
-            const ConstVectorView<D>& source_x);
+  template <class F>
+  static void call(std::uint32_t j, const Vector<D>& x, const ConstVectorView<D>& source_x, F& f) {
+    Vector<D> xij;
+    for (int d = 0; d < D; ++d) xij[d] = x[d] - source_x.component[d][j];
+    f(Index(j), xij, squared_norm<D>(xij));
+  }
+
+  // Lists the particles of cells [first_cell, last_cell) into `out`.
+  void fill_block(std::size_t first_cell, std::size_t last_cell, const ConstVectorView<D>& query_x,
+                  const ConstVectorView<D>& source_x, IndexArray& out);
 
   const NeighborGrid<D>* queries_ = nullptr;
   const CrossNeighbors<D>* table_ = nullptr;
-  std::vector<std::uint32_t> cell_first_word_;  // query cell c: the first word of its bit string
-  std::vector<std::uint32_t> cell_candidates_;  // query cell c: candidates, i.e. bits per particle
-  std::vector<std::uint64_t> own_bits_;
-  std::span<std::uint64_t> bits_;  // own_bits_, or a span of an arena
+  std::vector<IndexArray> blocks_;
+  std::vector<Span> span_;  // query particle i
 };
 
 extern template class NeighborList<2>;

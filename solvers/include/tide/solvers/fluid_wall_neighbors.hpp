@@ -29,16 +29,15 @@ class FluidWallNeighbors {
 
   /// Re-sorts the fluid, relinks it with the walls (`walls` as last passed to set_walls) and
   /// lists the neighbours; returns the particles removed. The passes' positions must stay those
-  /// of this call until the next one. The sort and reorder workspace and the fluid–fluid list,
-  /// never alive together, share one arena: the sort ends the old list, the new list ends the
-  /// sort's workspace.
+  /// of this call until the next one. The sort and reorder workspace lives in an arena kept
+  /// from step to step.
   std::size_t update_fluid(ParticleSet<D>& fluid, const ParticleSet<D>& walls) {
     const std::size_t removed = fluid_grid_.update(fluid, arena_);
     fluid_to_walls_.build(fluid_grid_, wall_grid_);
     walls_to_fluid_.build(wall_grid_, fluid_grid_);
     const auto fluid_x = std::as_const(fluid)[fluid.position()];
     const auto wall_x = walls[walls.position()];
-    fluid_list_.build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x, arena_);
+    fluid_list_.build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x);
     fluid_to_walls_list_.build(fluid_grid_, fluid_x, fluid_to_walls_, wall_x);
     walls_to_fluid_list_.build(wall_grid_, wall_x, walls_to_fluid_, fluid_x);
     return removed;
@@ -52,6 +51,16 @@ class FluidWallNeighbors {
   void for_each_wall_neighbor(std::size_t i, const ConstVectorView<D>& fluid_x, const ConstVectorView<D>& wall_x,
                               F&& f) const {
     fluid_to_walls_list_.for_each(i, fluid_x, wall_x, f);
+  }
+  /// The same walks in runs of NeighborRun (see NeighborList::for_each_run).
+  template <class F>
+  void for_each_fluid_run(std::size_t i, const ConstVectorView<D>& fluid_x, F&& f) const {
+    fluid_list_.for_each_run(i, fluid_x, fluid_x, f);
+  }
+  template <class F>
+  void for_each_wall_run(std::size_t i, const ConstVectorView<D>& fluid_x, const ConstVectorView<D>& wall_x,
+                         F&& f) const {
+    fluid_to_walls_list_.for_each_run(i, fluid_x, wall_x, f);
   }
   template <class F>
   void for_each_fluid_neighbor_of_wall(std::size_t b, const ConstVectorView<D>& wall_x,
@@ -86,7 +95,7 @@ std::size_t FluidWallNeighbors<D>::bytes() const {
 
 template <int D>
 void FluidWallNeighbors<D>::add_memory(MemoryUsage& usage) const {
-  usage.add("shared arena.sort, reorder and fluid list bits", arena_.bytes());
+  usage.add("arena.sort and reorder", arena_.bytes());
   fluid_grid_.add_memory(usage, "fluid grid");
   wall_grid_.add_memory(usage, "wall grid");
   fluid_to_walls_.add_memory(usage, "fluid-wall table");

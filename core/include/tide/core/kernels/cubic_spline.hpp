@@ -31,36 +31,34 @@ class CubicSplineKernel {
   Real smoothing_length() const { return smoothing_length_; }
   Real support_radius() const { return support_radius_; }
 
+  // Each piece is computed and one selected, with the values the piecewise formula gives: in a
+  // pair loop this is a blend rather than a branch (which piece a neighbour falls in is
+  // unpredictable), and the loop vectorises.
   Real value(Real r) const {
-    if (r >= support_radius_) return 0;
     const Real q = r * inverse_h_;
-    if (q >= 1) {
-      const Real two_minus_q = outer_distance(r);
-      return Real(0.25) * value_scale_ * two_minus_q * two_minus_q * two_minus_q;
-    }
-    return value_scale_ * (1 + q * q * (Real(-1.5) + Real(0.75) * q));
+    const Real two_minus_q = outer_distance(r);
+    const Real outer = Real(0.25) * value_scale_ * two_minus_q * two_minus_q * two_minus_q;
+    const Real inner = value_scale_ * (1 + q * q * (Real(-1.5) + Real(0.75) * q));
+    return r >= support_radius_ ? Real(0) : q >= 1 ? outer : inner;
   }
 
   Real derivative(Real r) const {
-    if (r >= support_radius_) return 0;
     const Real q = r * inverse_h_;
-    if (q >= 1) {
-      const Real two_minus_q = outer_distance(r);
-      return Real(-0.75) * derivative_scale_ * two_minus_q * two_minus_q;
-    }
-    return derivative_scale_ * q * (Real(-3) + Real(2.25) * q);
+    const Real two_minus_q = outer_distance(r);
+    const Real outer = Real(-0.75) * derivative_scale_ * two_minus_q * two_minus_q;
+    const Real inner = derivative_scale_ * q * (Real(-3) + Real(2.25) * q);
+    return r >= support_radius_ ? Real(0) : q >= 1 ? outer : inner;
   }
 
+  // The inner piece's dW/dr carries a factor q that cancels 1/r: no division, and the gradient is
+  // exactly zero at r = 0 without a special case.
   Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
-    if (r >= support_radius_) return Vector<D>::Zero();
     const Real q = r * inverse_h_;
-    if (q >= 1) {
-      const Real two_minus_q = outer_distance(r);
-      return (Real(-0.75) * derivative_scale_ * two_minus_q * two_minus_q / r) * x_ij;
-    }
-    // The inner piece's dW/dr carries a factor q that cancels 1/r: no division, and the gradient
-    // is exactly zero at r = 0 without a special case.
-    return (gradient_scale_ * (Real(-3) + Real(2.25) * q)) * x_ij;
+    const Real two_minus_q = outer_distance(r);
+    const Real outer = Real(-0.75) * derivative_scale_ * two_minus_q * two_minus_q / r;
+    const Real inner = gradient_scale_ * (Real(-3) + Real(2.25) * q);
+    if (r >= support_radius_) return Vector<D>::Zero();
+    return (q >= 1 ? outer : inner) * x_ij;
   }
 
  private:
