@@ -784,7 +784,7 @@ class SceneParser {
   }
 
   void read_surface_tension(const Node& node, scene::SurfaceTension& tension) const {
-    expect_object(node, {"model", "coefficient", "contact_angle", "adhesion"});
+    expect_object(node, {"model", "coefficient", "contact_angle", "adhesion", "unlike_attraction"});
     tension.model = choice(child(node, "model"), surface_tension_model_names);
     tension.coefficient = number(child(node, "coefficient"), positive);
     const Node angle = child(node, "contact_angle");
@@ -799,6 +799,12 @@ class SceneParser {
       if (tension.model != scene::SurfaceTensionModel::akinci)
         fail(adhesion, "no adhesion: only the akinci model has a wall adhesion coefficient (pairwise: contact_angle)");
       tension.adhesion = number(adhesion, non_negative);
+    }
+    const Node unlike = child(node, "unlike_attraction");
+    if (unlike.present()) {
+      if (tension.model != scene::SurfaceTensionModel::pairwise)
+        fail(unlike, "no unlike_attraction: only the pairwise model has pair strengths between fluids");
+      tension.unlike_attraction = boolean(unlike);
     }
   }
 

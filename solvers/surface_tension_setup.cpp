@@ -69,7 +69,12 @@ passes::SurfaceTensionSettings surface_tension_settings(const scene::Scene& scen
   // Two fluids: s_aa = s_bb = σ/k and s_ab = s/2 make σ_ab = σ; s_aw − s_bw = s cos θ / 2, with
   // s_aw + s_bw = s. The wall particles continue the fluid's lattice, so the fluid–wall lattice sum
   // is k too; tests/contact_angle_test.cpp finds the energy minimum of lattice-sampled drops within
-  // 1° of θ.
+  // 1° of θ. Both laws hold only contrasts, s_aa + s_bb − 2 s_ab and s_aw − s_bw: lowering every
+  // fluid pair's strength by c and every fluid–wall one by c/2 changes neither σ nor θ in a filled
+  // domain. Without unlike_attraction c = s/2, the most that leaves no strength negative: s_ab = 0,
+  // s_aa = s_bb = s/2 and s_aw, s_bw = s (1 ± cos θ)/4, each fluid meeting the wall by the one-fluid
+  // rule. Less like-pair cohesion is less of the lattice stiffness that pins a contact line
+  // (docs/multiphase.md, "Contact angle").
   s.pair_strength.assign(s.phase_count * s.phase_count, 0);
   s.wall_strength.assign(s.phase_count, 0);
   if (tension.model == scene::SurfaceTensionModel::pairwise) {
@@ -84,12 +89,13 @@ passes::SurfaceTensionSettings surface_tension_settings(const scene::Scene& scen
       for (const scene::FluidBlock& block : scene.fluid)
         if (block.material != first) second = block.material;
       const std::size_t n = s.phase_count;
-      s.pair_strength[first * n + first] = strength;
-      s.pair_strength[second * n + second] = strength;
-      s.pair_strength[first * n + second] = strength / 2;
-      s.pair_strength[second * n + first] = strength / 2;
-      s.wall_strength[first] = strength * (2 + cos_angle) / 4;
-      s.wall_strength[second] = strength * (2 - cos_angle) / 4;
+      const Real common = tension.unlike_attraction ? 0 : strength / 2;
+      s.pair_strength[first * n + first] = strength - common;
+      s.pair_strength[second * n + second] = strength - common;
+      s.pair_strength[first * n + second] = strength / 2 - common;
+      s.pair_strength[second * n + first] = strength / 2 - common;
+      s.wall_strength[first] = strength * (2 + cos_angle) / 4 - common / 2;
+      s.wall_strength[second] = strength * (2 - cos_angle) / 4 - common / 2;
     }
   }
   return s;

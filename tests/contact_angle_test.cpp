@@ -82,8 +82,9 @@ PairEnergies pair_energies(const Wcsph<2>& simulation) {
 // σ_ab and σ_aw − σ_bw as the discrete lattice and the 4 wall layers actually present have them,
 // and Young's law cos θ_Y = (σ_bw − σ_aw)/σ_ab (Young 1805; de Gennes 1985, Sec. II.A) gives the
 // angle at which the drop's energy is least. This checks the rule (surface_tension_setup.cpp)
-// apart from the dynamics, where a drop run from a half-disc stops up to 25° short of the target
-// through contact-line pinning (docs/multiphase.md, "Contact angle").
+// apart from the dynamics: with these strengths a drop run from a half-disc stops up to 25° short
+// of the target through contact-line pinning, cured by unlike_attraction false and a wider support
+// (contact_line_test.cpp; docs/multiphase.md, "Contact angle").
 // Measured (double): θ_Y = 30.98°, 90° (exact: s_aw = s_bw) and 149.02° for the targets 30°, 90°,
 // 150°; σ_ab = 0.903 and σ_aw − σ_bw = ∓0.774, both about 0.9 of the flat-plane values the rule
 // is built on (σ = 1, σ cos θ = 0.866), so their ratio keeps the angle. The same fit gives

@@ -364,6 +364,10 @@ TEST(SceneReader, ReadsSurfaceTensionModels) {
                  {{"model", "pairwise"}, {"coefficient", 0.07}, {"contact_angle", 30}}));
   EXPECT_EQ(s.solver.surface_tension.model, scene::SurfaceTensionModel::pairwise);
   EXPECT_EQ(s.solver.surface_tension.contact_angle, 30);
+  EXPECT_TRUE(s.solver.surface_tension.unlike_attraction);
+  s = parse(with(full_2d_scene(), "/solver/surface_tension",
+                 {{"model", "pairwise"}, {"coefficient", 0.07}, {"unlike_attraction", false}}));
+  EXPECT_FALSE(s.solver.surface_tension.unlike_attraction);
   s = parse(
       with(full_2d_scene(), "/solver/surface_tension", {{"model", "akinci"}, {"coefficient", 2}, {"adhesion", 1}}));
   EXPECT_EQ(s.solver.surface_tension.model, scene::SurfaceTensionModel::akinci);
@@ -381,6 +385,10 @@ TEST(SceneReaderRefuses, BadSurfaceTensionAndMultiphaseSettings) {
   expect_refused(with(two_fluid_scene(), tension + "/contact_angle", 30), tension + "/contact_angle",
                  "only the pairwise model");
   expect_refused(with(two_fluid_scene(), tension + "/adhesion", 1), tension + "/adhesion", "only the akinci model");
+  expect_refused(with(two_fluid_scene(), tension + "/unlike_attraction", false), tension + "/unlike_attraction",
+                 "only the pairwise model");
+  expect_refused(with(with(two_fluid_scene(), tension + "/model", "pairwise"), tension + "/unlike_attraction", 0),
+                 tension + "/unlike_attraction", "true or false");
   expect_refused(with(with(two_fluid_scene(), tension + "/model", "pairwise"), tension + "/contact_angle", 180),
                  tension + "/contact_angle", "an angle in degrees in (0, 180)");
   expect_refused(with(full_2d_scene(), tension, {{"model", "csf"}, {"coefficient", 1}}), tension + "/model",

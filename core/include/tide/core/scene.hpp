@@ -149,6 +149,9 @@ struct SurfaceTension {
   double coefficient = 0;     // σ in N/m (2D: N); akinci: Akinci's γ
   double contact_angle = 90;  // pairwise: static angle in degrees, measured through the first material
   double adhesion = 0;        // akinci: β of the wall adhesion
+  // pairwise, two fluids: whether unlike fluid particles attract (s_ab = s/2) or do not (s_ab = 0,
+  // like pairs s/2): the same σ and angle, less lattice cohesion to pin a contact line
+  bool unlike_attraction = true;
 };
 
 struct Solver {
