@@ -42,13 +42,17 @@ void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorVie
   const std::size_t blocks = (cells + cells_per_block - 1) / cells_per_block;
   blocks_.resize(blocks);
   std::atomic<bool> beyond_index_bits = false;
-  for_each_particle(blocks, [&](std::size_t block) {
-    const std::size_t first_cell = block * cells_per_block;
-    const std::size_t last_cell = std::min(cells, first_cell + cells_per_block);
-    for (std::size_t c = first_cell; c < last_cell; ++c)
-      for (std::uint32_t r = table.range_offset_[c]; r < table.range_offset_[c + 1]; ++r)
-        if (table.runs_[r].end > index_mask + Index(1)) beyond_index_bits = true;
-    if (!beyond_index_bits) fill_block(first_cell, last_cell, query_x, source_x, blocks_[block]);
+  // One task per block (a block is ~500 particles in 3D; for_each_particle's grain of 256 items
+  // would leave a scene of fewer than 256 blocks to one thread).
+  parallel_blocks(blocks, 1, [&](std::size_t first_block, std::size_t last_block) {
+    for (std::size_t block = first_block; block < last_block; ++block) {
+      const std::size_t first_cell = block * cells_per_block;
+      const std::size_t last_cell = std::min(cells, first_cell + cells_per_block);
+      for (std::size_t c = first_cell; c < last_cell; ++c)
+        for (std::uint32_t r = table.range_offset_[c]; r < table.range_offset_[c + 1]; ++r)
+          if (table.runs_[r].end > index_mask + Index(1)) beyond_index_bits = true;
+      if (!beyond_index_bits) fill_block(first_cell, last_cell, query_x, source_x, blocks_[block]);
+    }
   });
   if (beyond_index_bits) throw std::length_error("neighbour list: more than 2^27 source particles");
 }
