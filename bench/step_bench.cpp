@@ -72,6 +72,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "dam_break_scenes.hpp"
@@ -238,9 +239,28 @@ void register_reference() {
   }
 }
 
+// The dam break's water block as two fluid materials of the same properties, one half each: the
+// multiphase step (phase field, number density, per-phase equation of state) on the same flow.
+void split_into_two_fluids(scene::Scene& s) {
+  scene::Material second = s.materials.front();
+  second.name = "second water";
+  s.materials.push_back(second);
+  const scene::Box block = std::get<scene::Box>(s.fluid.front().shape);
+  scene::Box first_half = block, second_half = block;
+  first_half.max[0] = second_half.min[0] = 0.5 * (block.min[0] + block.max[0]);
+  s.fluid = {{0, first_half}, {1, second_half}};
+}
+
+// A support of 4 spacings (h = 2Δx with the cubic spline) and the wall layers that cover it:
+// what the pairwise forces need to stay stable (docs/multiphase.md).
+void widen_support(scene::Scene& s) {
+  s.smoothing_ratio = 2;
+  s.walls.layers = 4;
+}
+
 // Each optional feature of the WCSPH step, on and off, on the 3D dam break at 10^5 particles.
-// Surface tension and multiple phases (on main since the multiphase merge) need a two-fluid
-// scene rather than a switch on this one, and are not entries yet.
+// Where a feature needs more than a switch (two fluids for csf, a wider support for the pairwise
+// forces), off is the same scene without the feature.
 struct Feature {
   const char* name;
   std::function<void(scene::Scene&)> on;
@@ -268,6 +288,28 @@ void register_features() {
        [](scene::Scene& s) { s.solver.density = scene::DensityMethod::summation; }},
       {"shifting", [](scene::Scene& s) { s.solver.shifting = scene::Shifting::fickian; },
        [](scene::Scene& s) { s.solver.shifting = scene::Shifting::none; }},
+      {"multiple_phases", split_into_two_fluids, [](scene::Scene&) {}},
+      {"surface_tension_akinci",
+       [](scene::Scene& s) {
+         s.solver.surface_tension.model = scene::SurfaceTensionModel::akinci;
+         s.solver.surface_tension.coefficient = 1;
+         s.solver.surface_tension.adhesion = 1;
+       },
+       [](scene::Scene&) {}},
+      {"surface_tension_csf",
+       [](scene::Scene& s) {
+         split_into_two_fluids(s);
+         s.solver.surface_tension.model = scene::SurfaceTensionModel::csf;
+         s.solver.surface_tension.coefficient = 0.0728;
+       },
+       split_into_two_fluids},
+      {"surface_tension_pairwise",
+       [](scene::Scene& s) {
+         widen_support(s);
+         s.solver.surface_tension.model = scene::SurfaceTensionModel::pairwise;
+         s.solver.surface_tension.coefficient = 0.0728;
+       },
+       widen_support},
   };
   constexpr std::size_t n = 100'000;
   for (const Feature& feature : features) {

@@ -63,15 +63,23 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
       neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
         accumulate(run, sum, [&](int k) {
           const Index j = run.index[k];
-          return mass[j] * (v_i - v[j]).dot(kernel.gradient(run.offset(k), std::sqrt(run.r2[k])));
+          const Real gradient_factor = kernel.derivative_over_r(std::sqrt(run.r2[k]));
+          Real v_dot_grad_w = 0;
+          for (int d = 0; d < D; ++d) v_dot_grad_w += (v_i[d] - v.component[d][j]) * (gradient_factor * run.x_ij[d][k]);
+          return mass[j] * v_dot_grad_w;
         });
       });
     }
     neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
       accumulate(run, sum, [&](int k) {
         const Index b = run.index[k];
-        const Vector<D> v_ib = w.surface_velocity ? Vector<D>(v_i - surface_velocity[b]) : v_i;
-        return wall_mass[b] * v_ib.dot(kernel.gradient(run.offset(k), std::sqrt(run.r2[k])));
+        const Real gradient_factor = kernel.derivative_over_r(std::sqrt(run.r2[k]));
+        Real v_dot_grad_w = 0;
+        for (int d = 0; d < D; ++d) {
+          const Real v_ib = w.surface_velocity ? v_i[d] - surface_velocity.component[d][b] : v_i[d];
+          v_dot_grad_w += v_ib * (gradient_factor * run.x_ij[d][k]);
+        }
+        return wall_mass[b] * v_dot_grad_w;
       });
     });
     rate[i] = sum;

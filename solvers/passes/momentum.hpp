@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <type_traits>
 
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
@@ -45,26 +46,34 @@ struct ArtificialStressSettings {
 
 namespace detail {
 
-// Viscous acceleration on i from one neighbour j.
+// Viscous acceleration on i from one neighbour j, a scalar coefficient times a vector: times
+// ∇W_ij for the artificial viscosity, times v_ij for the laminar one.
 // Artificial: Monaghan 1992, eq. 4.1–4.2: −m_j Π_ij ∇W_ij, Π_ij = (−α c μ + β μ²)/ρ̄_ij when
 //   v_ij·x_ij < 0, μ = h v_ij·x_ij / (r² + 0.01 h²).
 // Laminar: Morris, Fox & Zhu 1997, eq. 8: m_j (μ_i + μ_j) x_ij·∇W_ij / (ρ_i ρ_j (r² + 0.01 h²)) v_ij.
-template <int D, scene::ViscosityModel Model>
-inline Vector<D> viscous_term(const ViscositySettings& s, Real m_j, Real rho_i, Real rho_j, const Vector<D>& v_ij,
-                              const Vector<D>& x_ij, Real r2, const Vector<D>& grad_w) {
+template <scene::ViscosityModel Model>
+inline Real viscous_coefficient(const ViscositySettings& s, Real m_j, Real rho_i, Real rho_j, Real v_dot_x,
+                                Real x_dot_grad_w, Real r2) {
   const Real h = s.smoothing_length;
   const Real regularised_r2 = r2 + Real(0.01) * h * h;
   if constexpr (Model == scene::ViscosityModel::artificial) {
     // Only approaching pairs (v_ij·x_ij < 0) are damped; μ = 0, hence Π = 0, for the others,
     // taken without a branch: about half the pairs approach, unpredictably.
-    const Real v_dot_x = std::min(v_ij.dot(x_ij), Real(0));
-    const Real mu = h * v_dot_x / regularised_r2;
+    const Real mu = h * std::min(v_dot_x, Real(0)) / regularised_r2;
     const Real pi = (-s.alpha * s.sound_speed * mu + s.beta * mu * mu) / (Real(0.5) * (rho_i + rho_j));
-    return (-m_j * pi) * grad_w;
+    return -m_j * pi;
   } else {
     const Real dynamic_sum = s.kinematic_viscosity * (rho_i + rho_j);
-    return (m_j * dynamic_sum * x_ij.dot(grad_w) / (rho_i * rho_j * regularised_r2)) * v_ij;
+    return m_j * dynamic_sum * x_dot_grad_w / (rho_i * rho_j * regularised_r2);
   }
+}
+
+template <int D, scene::ViscosityModel Model>
+inline Vector<D> viscous_term(const ViscositySettings& s, Real m_j, Real rho_i, Real rho_j, const Vector<D>& v_ij,
+                              const Vector<D>& x_ij, Real r2, const Vector<D>& grad_w) {
+  const Real coefficient = viscous_coefficient<Model>(s, m_j, rho_i, rho_j, v_ij.dot(x_ij), x_ij.dot(grad_w), r2);
+  if constexpr (Model == scene::ViscosityModel::artificial) return coefficient * grad_w;
+  return coefficient * v_ij;
 }
 
 // A particle's share R_i of the artificial stress: ε |p_i|/ρ_i² where it is in tension (p_i < 0),
@@ -196,51 +205,62 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
         }
       });
     } else {
-      // The pressure and viscous terms of a run's pairs in a loop without branches (vectorised,
-      // the neighbours' fields gathered), then applied pair by pair in the list's order, as a
-      // walk would: a −= pressure term, a += viscous term. The pair i–i gives exact zeros.
-      std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
-      const auto apply = [&](const NeighborRun<D>& run, bool viscous) {
+      // The pressure and viscous terms of a run's pairs in a loop of scalars without branches
+      // (vectorised, the neighbours' fields gathered) into arrays of the run's own, which no
+      // other pointer can alias, then applied pair by pair in the list's order, as a walk would:
+      // a −= pressure term, a += viscous term. The pair i–i gives zeros. One run of fluid or wall
+      // neighbours (walls with their extrapolated p and ρ), viscous or not (a std::bool_constant).
+      const auto add_run = [&](auto viscous, const NeighborRun<D>& run, std::span<const Real> masses,
+                               std::span<const Real> densities, std::span<const Real> pressures,
+                               const ConstVectorView<D>& velocities) {
+        constexpr bool viscous_run = decltype(viscous)::value;
+        std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
+        for (int k = 0; k < run.count; ++k) {
+          const Index j = run.index[k];
+          const Real r = std::sqrt(run.r2[k]);
+          const Real rho_j = densities[j];
+          const Real gradient_factor = kernel.derivative_over_r(r);
+          std::array<Real, D> grad_w;
+          for (int d = 0; d < D; ++d) grad_w[d] = gradient_factor * run.x_ij[d][k];
+          if constexpr (WithPressure) {
+            const Real scale = masses[j] * pressure_term(pressures[j] / (rho_j * rho_j), r);
+            for (int d = 0; d < D; ++d) pressure_terms[d][k] = scale * grad_w[d];
+          }
+          if constexpr (viscous_run) {
+            std::array<Real, D> v_ij;
+            Real v_dot_x = 0, x_dot_grad_w = 0;
+            for (int d = 0; d < D; ++d) {
+              v_ij[d] = v_i[d] - velocities.component[d][j];
+              v_dot_x += v_ij[d] * run.x_ij[d][k];
+              x_dot_grad_w += run.x_ij[d][k] * grad_w[d];
+            }
+            const Real coefficient =
+                detail::viscous_coefficient<Model>(settings, masses[j], rho_i, rho_j, v_dot_x, x_dot_grad_w, run.r2[k]);
+            const std::array<Real, D>& direction = Model == scene::ViscosityModel::artificial ? grad_w : v_ij;
+            for (int d = 0; d < D; ++d) viscous_terms[d][k] = coefficient * direction[d];
+          }
+        }
         for (int k = 0; k < run.count; ++k) {
           if constexpr (WithPressure) {
             for (int d = 0; d < D; ++d) a[d] -= pressure_terms[d][k];
           }
-          if (viscous) {
+          if constexpr (viscous_run) {
             for (int d = 0; d < D; ++d) a[d] += viscous_terms[d][k];
           }
         }
       };
-      const auto store = [](std::array<std::array<Real, NeighborRun<D>::capacity>, D>& terms, int k,
-                            const Vector<D>& t) {
-        for (int d = 0; d < D; ++d) terms[d][k] = t[d];
-      };
-      // One run of fluid or wall neighbours (walls with their extrapolated p and ρ), viscous or not.
-      const auto add_run = [&](const NeighborRun<D>& run, std::span<const Real> masses, std::span<const Real> densities,
-                               std::span<const Real> pressures, const ConstVectorView<D>& velocities, bool viscous) {
-        for (int k = 0; k < run.count; ++k) {
-          const Index j = run.index[k];
-          const Vector<D> x_ij = run.offset(k);
-          const Real r = std::sqrt(run.r2[k]);
-          const Real rho_j = densities[j];
-          const Vector<D> grad_w = kernel.gradient(x_ij, r);
-          if constexpr (WithPressure)
-            store(pressure_terms, k, (masses[j] * pressure_term(pressures[j] / (rho_j * rho_j), r)) * grad_w);
-          if (viscous) {
-            store(viscous_terms, k,
-                  detail::viscous_term<D, Model>(settings, masses[j], rho_i, rho_j, v_i - velocities[j], x_ij,
-                                                 run.r2[k], grad_w));
-          }
-        }
-        apply(run, viscous);
-      };
-      neighbors.for_each_fluid_run(i, x,
-                                   [&](const NeighborRun<D>& run) { add_run(run, mass, density, pressure, v, true); });
+      neighbors.for_each_fluid_run(
+          i, x, [&](const NeighborRun<D>& run) { add_run(std::true_type{}, run, mass, density, pressure, v); });
       if (!WithPressure && !settings.walls_viscous) {
         acceleration.set(i, a);
         return;
       }
       neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
-        add_run(run, wall_mass, wall_density, wall_pressure, wall_v, settings.walls_viscous);
+        if (settings.walls_viscous) {
+          add_run(std::true_type{}, run, wall_mass, wall_density, wall_pressure, wall_v);
+        } else {
+          add_run(std::false_type{}, run, wall_mass, wall_density, wall_pressure, wall_v);
+        }
       });
     }
     acceleration.set(i, a);

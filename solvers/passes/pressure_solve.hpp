@@ -74,14 +74,14 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Real rho_i = density[i];
     const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
-    // Without a branch, so that accumulate() vectorises it; the pair i–i adds an exact zero.
+    // Without a branch, so that accumulate_along_offsets() vectorises it; the pair i–i adds an exact zero.
     const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a, std::span<const Real> masses,
                                    std::span<const Real> densities, std::span<const Real> pressures) {
-      accumulate(run, a, [&](int k) {
+      accumulate_along_offsets(run, a, [&](int k) {
         const Index j = run.index[k];
         const Real rho_j = densities[j];
-        return Vector<D>((-masses[j] * (p_over_rho2_i + pressures[j] / (rho_j * rho_j))) *
-                         kernel.gradient(run.offset(k), std::sqrt(run.r2[k])));
+        return -masses[j] * (p_over_rho2_i + pressures[j] / (rho_j * rho_j)) *
+               kernel.derivative_over_r(std::sqrt(run.r2[k]));
       });
     };
     Vector<D> a = Vector<D>::Zero();

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <array>
-#include <type_traits>
 
 #include "tide/core/types.hpp"
 
@@ -16,34 +15,30 @@ struct NeighborRun {
   std::array<Index, capacity> index;
   std::array<std::array<Real, capacity>, D> x_ij;
   std::array<Real, capacity> r2;
-
-  Vector<D> offset(int k) const {
-    Vector<D> x;
-    for (int d = 0; d < D; ++d) x[d] = x_ij[d].data()[k];
-    return x;
-  }
 };
 
-/// total += term(k) for every k of a run, in order, for a scalar or a Vector<D> term: the terms
-/// are computed in a loop of their own, which the compiler vectorises when term has no branch
-/// (gathering the neighbours' fields by index), and added one by one afterwards, so the total
-/// is bitwise that of a neighbour-by-neighbour walk.
-template <int D, class Total, class Term>
-void accumulate(const NeighborRun<D>& run, Total& total, Term&& term) {
-  constexpr int capacity = NeighborRun<D>::capacity;
-  if constexpr (std::is_same_v<Total, Real>) {
-    std::array<Real, capacity> terms;
-    for (int k = 0; k < run.count; ++k) terms[k] = term(k);
-    for (int k = 0; k < run.count; ++k) total += terms[k];
-  } else {
-    std::array<std::array<Real, capacity>, D> terms;
-    for (int k = 0; k < run.count; ++k) {
-      const Vector<D> t = term(k);
-      for (int d = 0; d < D; ++d) terms[d][k] = t[d];
-    }
-    for (int k = 0; k < run.count; ++k)
-      for (int d = 0; d < D; ++d) total[d] += terms[d][k];
+/// total += term(k) for every k of a run, in order: the terms are computed in a loop of their
+/// own, which the compiler vectorises when term has no branch and works on scalars (gathering the
+/// neighbours' fields by index; Eigen's small-vector temporaries stop the vectoriser), and added
+/// one by one afterwards, so the total is bitwise that of a neighbour-by-neighbour walk.
+template <int D, class Term>
+void accumulate(const NeighborRun<D>& run, Real& total, Term&& term) {
+  std::array<Real, NeighborRun<D>::capacity> terms;
+  for (int k = 0; k < run.count; ++k) terms[k] = term(k);
+  for (int k = 0; k < run.count; ++k) total += terms[k];
+}
+
+/// total += coefficient(k) x_ij for every k of a run, in order: accumulate() for a vector term
+/// along the pair's offset, as every c ∇W_ij of a radial kernel is.
+template <int D, class Coefficient>
+void accumulate_along_offsets(const NeighborRun<D>& run, Vector<D>& total, Coefficient&& coefficient) {
+  std::array<std::array<Real, NeighborRun<D>::capacity>, D> terms;
+  for (int k = 0; k < run.count; ++k) {
+    const Real c = coefficient(k);
+    for (int d = 0; d < D; ++d) terms[d][k] = c * run.x_ij[d][k];
   }
+  for (int k = 0; k < run.count; ++k)
+    for (int d = 0; d < D; ++d) total[d] += terms[d][k];
 }
 
 }  // namespace tide

@@ -50,15 +50,20 @@ class CubicSplineKernel {
     return r >= support_radius_ ? Real(0) : q >= 1 ? outer : inner;
   }
 
-  // The inner piece's dW/dr carries a factor q that cancels 1/r: no division, and the gradient is
-  // exactly zero at r = 0 without a special case.
-  Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
+  // (1/r) dW/dr, so that ∇W = derivative_over_r(r) x_ij. The inner piece's dW/dr carries a
+  // factor q that cancels 1/r: no division, and the gradient is exactly zero at r = 0 without a
+  // special case.
+  Real derivative_over_r(Real r) const {
     const Real q = r * inverse_h_;
     const Real two_minus_q = outer_distance(r);
     const Real outer = Real(-0.75) * derivative_scale_ * two_minus_q * two_minus_q / r;
     const Real inner = gradient_scale_ * (Real(-3) + Real(2.25) * q);
-    if (r >= support_radius_) return Vector<D>::Zero();
-    return (q >= 1 ? outer : inner) * x_ij;
+    return r >= support_radius_ ? Real(0) : q >= 1 ? outer : inner;
+  }
+
+  Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
+    if (r >= support_radius_) return Vector<D>::Zero();  // also for an infinite x_ij
+    return derivative_over_r(r) * x_ij;
   }
 
  private:

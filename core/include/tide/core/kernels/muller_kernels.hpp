@@ -46,10 +46,14 @@ class Poly6Kernel {
   }
 
   // (1/r) dW/dr = −6σ / h^(D+2) · (1 − q²)²: no division, exactly zero gradient at r = 0.
-  Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
-    if (r >= support_radius_) return Vector<D>::Zero();
+  Real derivative_over_r(Real r) const {
     const Real s = one_minus_q2(r);
-    return (gradient_scale_ * s * s) * x_ij;
+    return r >= support_radius_ ? Real(0) : gradient_scale_ * s * s;
+  }
+
+  Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
+    if (r >= support_radius_) return Vector<D>::Zero();  // also for an infinite x_ij
+    return derivative_over_r(r) * x_ij;
   }
 
  private:
@@ -100,9 +104,12 @@ class SpikyKernel {
     return derivative_scale_ * t * t;
   }
 
+  // (1/r) dW/dr, so that ∇W = derivative_over_r(r) x_ij; zero at r = 0.
+  Real derivative_over_r(Real r) const { return r >= support_radius_ || r <= 0 ? Real(0) : derivative(r) / r; }
+
   Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
-    if (r >= support_radius_ || r <= 0) return Vector<D>::Zero();
-    return (derivative(r) / r) * x_ij;
+    if (r >= support_radius_) return Vector<D>::Zero();  // also for an infinite x_ij
+    return derivative_over_r(r) * x_ij;
   }
 
  private:
@@ -158,9 +165,12 @@ class ViscosityKernel {
     return derivative_scale_ * t * t * (1 + q * (2 + 3 * q)) / (q * q);
   }
 
+  // (1/r) dW/dr, so that ∇W = derivative_over_r(r) x_ij; zero at r = 0.
+  Real derivative_over_r(Real r) const { return r >= support_radius_ || r <= 0 ? Real(0) : derivative(r) / r; }
+
   Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
-    if (r >= support_radius_ || r <= 0) return Vector<D>::Zero();
-    return (derivative(r) / r) * x_ij;
+    if (r >= support_radius_) return Vector<D>::Zero();  // also for an infinite x_ij
+    return derivative_over_r(r) * x_ij;
   }
 
   /// ∇²W = W'' + (D − 1) W' / r. In 3D this is the paper's 45 / (π h⁶) (h − r). In 2D, from the
