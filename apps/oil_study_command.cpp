@@ -20,14 +20,15 @@ namespace {
 namespace fs = std::filesystem;
 
 /// One scene of the study: the parameters its name carries (scripts/oil_scenes.py names them
-/// oil_middle_h<height>_<orientation>_<wetting> and oil_upper_w<width>_<wetting>, in mm) and its
+/// oil_middle_h<height>_<orientation>_<wetting>, oil_upper_w<width>_<wetting> and, for the wetting
+/// comparison at a low Bond number, oil_wetting_h<height>_<orientation>_<wetting>, in mm) and its
 /// recovery curve.
 struct OilRun {
   fs::path scene;
   std::string name;
-  std::string family;       // "middle" or "upper"
-  double size = 0;          // middle: the fracture's height above the floor; upper: the throat's width (mm)
-  std::string orientation;  // middle: horizontal, rising or falling
+  std::string family;       // "middle", "upper" or "wetting" (a middle-fractured cavity)
+  double size = 0;          // middle, wetting: the fracture's height above the floor; upper: the throat's width (mm)
+  std::string orientation;  // middle, wetting: horizontal, rising or falling
   std::string wetting;      // water_wet or oil_wet
   double end_time = 0;
   std::vector<double> times;
@@ -41,8 +42,9 @@ struct OilRun {
     const auto first = std::lower_bound(times.begin(), times.end(), times.back() - span);
     return recoveries.back() - recoveries[static_cast<std::size_t>(first - times.begin())];
   }
+  bool middle_fractured() const { return family == "middle" || family == "wetting"; }
   std::string label() const {
-    if (family == "middle") return "h = " + format(size) + " mm, " + orientation + ", " + wetting;
+    if (middle_fractured()) return "h = " + format(size) + " mm, " + orientation + ", " + wetting;
     return "w = " + format(size) + " mm, " + wetting;
   }
   static std::string format(double value) {
@@ -67,7 +69,7 @@ bool parse_name(OilRun& run) {
   const std::string& size = parts[2];
   if (size.size() < 2) return false;
   run.size = std::stod(size.substr(1));
-  if (run.family == "middle" && parts.size() == 6 && size[0] == 'h') {
+  if (run.middle_fractured() && parts.size() == 6 && size[0] == 'h') {
     run.orientation = parts[3];
     run.wetting = parts[4] + "_" + parts[5];
     return true;
@@ -181,7 +183,7 @@ std::string summary_markdown(const std::vector<OilRun>& runs) {
         << "| --- | --- | --- | --- | --- | --- |\n";
   char numbers[96];
   for (const OilRun& run : runs) {
-    const std::string fracture = run.family == "middle"
+    const std::string fracture = run.middle_fractured()
                                      ? "height " + OilRun::format(run.size) + " mm, " + run.orientation
                                      : "width " + OilRun::format(run.size) + " mm";
     std::snprintf(numbers, sizeof numbers, "%.3g | %.3f | %+.3f", run.times.empty() ? 0.0 : run.times.back(),
@@ -224,15 +226,27 @@ int oil_study(const OilStudyOptions& options) {
   const std::string table = summary_markdown(runs);
   validation::write_text_file(out / "oil_study.md", table);
   std::cout << '\n' << table;
+  // A family's plots only when one of its runs reached its end: gnuplot refuses an empty plot.
+  const auto plotted = [&runs](const std::string& family) {
+    return std::any_of(runs.begin(), runs.end(), [&](const OilRun& run) { return run.family == family && run.ok; });
+  };
   if (validation::gnuplot_available()) {
-    validation::draw_png(out / "middle_fractured.png", [&](const fs::path& png) {
-      return curves_script(png, runs, "middle", "middle-fractured cavity: oil recovery", out);
-    });
-    validation::draw_png(out / "upper_fractured.png", [&](const fs::path& png) {
-      return curves_script(png, runs, "upper", "upper-fractured cavity: oil recovery", out);
-    });
-    validation::draw_png(out / "upper_fractured_width.png",
-                         [&](const fs::path& png) { return width_script(png, runs); });
+    if (plotted("middle"))
+      validation::draw_png(out / "middle_fractured.png", [&](const fs::path& png) {
+        return curves_script(png, runs, "middle", "middle-fractured cavity: oil recovery", out);
+      });
+    if (plotted("upper")) {
+      validation::draw_png(out / "upper_fractured.png", [&](const fs::path& png) {
+        return curves_script(png, runs, "upper", "upper-fractured cavity: oil recovery", out);
+      });
+      validation::draw_png(out / "upper_fractured_width.png",
+                           [&](const fs::path& png) { return width_script(png, runs); });
+    }
+    if (plotted("wetting"))
+      validation::draw_png(out / "wetting.png", [&](const fs::path& png) {
+        return curves_script(png, runs, "wetting",
+                             "middle-fractured cavity at a low Bond number, water-wet and oil-wet: oil recovery", out);
+      });
     std::cout << "tide: oil-study: plots in " << out.string() << '\n';
   } else {
     std::cerr << "tide: oil-study: gnuplot is not on the PATH: no plots (Debian: apt-get install gnuplot-nox)\n";
