@@ -3,6 +3,7 @@
 // Density rate from the continuity equation, with δ-SPH density diffusion.
 
 #include <cmath>
+#include <type_traits>
 
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/equation_of_state.hpp"
@@ -70,17 +71,27 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
         });
       });
     }
-    neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+    // Moving walls or not (a std::bool_constant) is chosen outside the pair loop, which then
+    // has no branch.
+    const auto add_wall_run = [&](auto moving, const NeighborRun<D>& run) {
       accumulate(run, sum, [&](int k) {
         const Index b = run.index[k];
         const Real gradient_factor = kernel.derivative_over_r(std::sqrt(run.r2[k]));
         Real v_dot_grad_w = 0;
         for (int d = 0; d < D; ++d) {
-          const Real v_ib = w.surface_velocity ? v_i[d] - surface_velocity.component[d][b] : v_i[d];
+          Real v_ib = v_i[d];
+          if constexpr (decltype(moving)::value) v_ib -= surface_velocity.component[d][b];
           v_dot_grad_w += v_ib * (gradient_factor * run.x_ij[d][k]);
         }
         return wall_mass[b] * v_dot_grad_w;
       });
+    };
+    neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+      if (w.surface_velocity) {
+        add_wall_run(std::true_type{}, run);
+      } else {
+        add_wall_run(std::false_type{}, run);
+      }
     });
     rate[i] = sum;
   });
