@@ -252,10 +252,17 @@ void split_into_two_fluids(scene::Scene& s) {
 }
 
 // A support of 4 spacings (h = 2Δx with the cubic spline) and the wall layers that cover it:
-// what the pairwise forces need to stay stable (docs/multiphase.md).
+// what the pairwise forces need to stay stable (docs/multiphase.md). The domain grows with the
+// walls, which would otherwise leave it.
 void widen_support(scene::Scene& s) {
+  constexpr int layers = 4;
+  const double extra = (layers - s.walls.layers) * s.particle_spacing;
   s.smoothing_ratio = 2;
-  s.walls.layers = 4;
+  s.walls.layers = layers;
+  for (int d = 0; d < s.dimension; ++d) {
+    s.domain.box.min[d] -= extra;
+    s.domain.box.max[d] += extra;
+  }
 }
 
 // Each optional feature of the WCSPH step, on and off, on the 3D dam break at 10^5 particles.

@@ -305,8 +305,8 @@ def main():
         w("(h = 2Δx, 4 wall layers) and `surface_tension_akinci` on the one-fluid scene.\n")
         plain = [ms(feats[f]["off"]) for f in PLAIN_OFF if f in feats and "off" in feats[f]]
         if len(plain) > 1:
-            w(f"The *off* rows of {', '.join(f'`{f}`' for f in PLAIN_OFF if f in feats)} are the same scene run "
-              f"{len(plain)} times: {min(plain):.2f}–{max(plain):.2f} ms per step, a spread of "
+            w(f"The *off* rows of {', '.join(f'`{f}`' for f in PLAIN_OFF if f in feats)} are the same scene "
+              f"({len(plain)} entries): {min(plain):.2f}–{max(plain):.2f} ms per step, a spread of "
               f"{100 * (max(plain) / min(plain) - 1):.0f}%, which is this run's noise: a cost within it is not "
               "resolved.\n")
         w("| feature | off: ms/step | on: ms/step | cost when on |")
