@@ -749,6 +749,7 @@ class SceneParser {
                          "background_pressure",
                          "shifting",
                          "artificial_stress",
+                         "neighbor_skin",
                          "max_mach_number",
                          "max_density_error",
                          "max_divergence_error",
@@ -779,6 +780,8 @@ class SceneParser {
     read_optional(node, "max_solver_iterations", solver.max_solver_iterations);
     read_optional(node, "max_failed_solves", solver.max_failed_solves);
     read_optional(node, "artificial_stress", solver.artificial_stress, non_negative);
+    if (const Node skin = child(node, "neighbor_skin"); skin.present())
+      solver.neighbor_skin = number(skin, non_negative);
     if (const Node tension = child(node, "surface_tension"); tension.present())
       read_surface_tension(tension, solver.surface_tension);
   }

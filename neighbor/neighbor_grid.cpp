@@ -45,29 +45,34 @@ std::string_view cell_lookup_name(CellLookup lookup) {
 }
 
 template <int D>
-NeighborGrid<D>::NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort, CellLookup lookup)
+NeighborGrid<D>::NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort, CellLookup lookup,
+                              Real skin)
     : domain_(domain),
       support_radius_(support_radius),
       support_squared_(support_radius * support_radius),
+      skin_(skin),
       sort_(sort),
       lookup_(lookup) {
   if (!(support_radius > 0) || !std::isfinite(support_radius))
     throw std::invalid_argument("neighbour grid: support radius must be positive and finite, got " +
                                 std::to_string(support_radius));
+  if (!(skin >= 0) || !std::isfinite(skin))
+    throw std::invalid_argument("neighbour grid: skin must be finite and at least 0, got " + std::to_string(skin));
   std::array<std::uint32_t, D> top{};
   for (int d = 0; d < D; ++d) {
     const Real length = domain.upper[d] - domain.lower[d];
     if (!(length > 0) || !std::isfinite(length))
       throw std::invalid_argument("neighbour grid: domain upper bound must exceed lower bound on axis " +
                                   std::to_string(d));
-    const Real cells = std::floor(length / (support_radius * (1 + cell_margin)));
+    const Real cells = std::floor(length / ((support_radius + skin) * (1 + cell_margin)));
     if (cells >= Real(std::uint64_t(1) << morton_bits_per_axis<D>))
       throw std::invalid_argument("neighbour grid: too many cells on axis " + std::to_string(d) +
                                   " for a 64-bit Morton code; enlarge the support or shrink the domain");
     cell_counts_[d] = static_cast<std::uint32_t>(std::max<Real>(cells, 1));
     if (domain.periodic[d] && cell_counts_[d] < 3)
-      throw std::invalid_argument("neighbour grid: a periodic axis must be at least 3 support radii long (axis " +
-                                  std::to_string(d) + ")");
+      throw std::invalid_argument(
+          "neighbour grid: a periodic axis must be at least 3 (support radius + skin) long (axis " + std::to_string(d) +
+          ")");
     cell_size_[d] = length / static_cast<Real>(cell_counts_[d]);
     inverse_cell_size_[d] = Real(1) / cell_size_[d];
     top[d] = cell_counts_[d] - 1;
@@ -339,10 +344,12 @@ void CrossNeighbors<D>::build(const NeighborGrid<D>& queries, const NeighborGrid
   for (int d = 0; d < D; ++d) {
     if (queries.cell_counts_[d] != sources.cell_counts_[d] || queries.cell_size_[d] != sources.cell_size_[d] ||
         queries.domain_.periodic[d] != sources.domain_.periodic[d])
-      throw std::invalid_argument("cross neighbours: both grids need the same domain and support radius");
+      throw std::invalid_argument("cross neighbours: both grids need the same domain, support radius and skin");
   }
   shifts_ = sources.shifts_;
   support_squared_ = sources.support_squared_;
+  const Real list_radius = sources.support_radius_ + sources.skin_;
+  list_radius_squared_ = list_radius * list_radius;
   // Box of the occupied source cells: a query cell more than one cell outside it on a closed
   // axis has no source in its stencil and needs no look-ups (e.g. the walls above the water).
   using Box = std::array<std::array<std::uint32_t, D>, 2>;

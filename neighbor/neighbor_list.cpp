@@ -20,6 +20,24 @@ constexpr std::array<std::uint64_t, 64> bit = [] {
   return powers;
 }();
 
+// Appends entry(k) for every set bit k of `mask`, in order, to `out`, eight per round whatever
+// the count, the surplus overwritten by what follows: a mask rarely holds more than eight
+// neighbours, so the loop ends where the predictor expects, where a loop over the set bits would
+// not. A round past the last set bit calls entry(64).
+template <class Array, class Entry>
+void append_set_bits(std::uint64_t mask, Array& out, Entry&& entry) {
+  out.reserve_more(64);
+  std::uint32_t* const at = out.data.get() + out.size;
+  const int set = std::popcount(mask);
+  for (int written = 0; written < set; written += 8) {
+    for (int k = 0; k < 8; ++k) {
+      at[written + k] = entry(std::countr_zero(mask));
+      mask &= mask - 1;
+    }
+  }
+  out.size += static_cast<std::size_t>(set);
+}
+
 }  // namespace
 
 template <int D>
@@ -62,7 +80,7 @@ void NeighborList<D>::fill_block(std::size_t first_cell, std::size_t last_cell, 
                                  const ConstVectorView<D>& source_x, IndexArray& out) {
   const NeighborGrid<D>& queries = *queries_;
   const CrossNeighbors<D>& table = *table_;
-  const Real support_squared = table.support_squared_;
+  const Real list_radius_squared = table.list_radius_squared_;
   const bool periodic = table.periodic();
   out.size = 0;
   for (std::size_t cell = first_cell; cell < last_cell; ++cell) {
@@ -83,26 +101,69 @@ void NeighborList<D>::fill_block(std::size_t first_cell, std::size_t last_cell, 
           for (Index k = 0; k < count; ++k) {
             Vector<D> xij;
             for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source[d][k];
-            mask |= squared_norm<D>(xij) < support_squared ? bit[k] : 0;
+            mask |= squared_norm<D>(xij) < list_radius_squared ? bit[k] : 0;
           }
-          // Eight entries per round whatever the count, the surplus overwritten by what follows:
-          // a mask rarely holds more than eight neighbours, so the loop ends where the predictor
-          // expects, where a loop over the set bits would not.
-          out.reserve_more(64);
-          std::uint32_t* const entry = out.data.get() + out.size;
           const std::uint32_t base = shift | first;
-          const int set = std::popcount(mask);
-          for (int written = 0; written < set; written += 8) {
-            for (int k = 0; k < 8; ++k) {
-              entry[written + k] = base + static_cast<std::uint32_t>(std::countr_zero(mask));
-              mask &= mask - 1;
-            }
-          }
-          out.size += static_cast<std::size_t>(set);
+          append_set_bits(mask, out, [&](int k) { return base + static_cast<std::uint32_t>(k); });
         }
       }
       span_[i] = {static_cast<std::uint32_t>(first_entry), static_cast<std::uint32_t>(out.size - first_entry)};
     }
+  }
+}
+
+template <int D>
+void NeighborList<D>::refine(const NeighborList& candidates, const ConstVectorView<D>& query_x,
+                             const ConstVectorView<D>& source_x) {
+  queries_ = candidates.queries_;
+  table_ = candidates.table_;
+  span_.resize(candidates.span_.size());
+  blocks_.resize(candidates.blocks_.size());
+  parallel_blocks(blocks_.size(), 1, [&](std::size_t first_block, std::size_t last_block) {
+    for (std::size_t block = first_block; block < last_block; ++block) {
+      if (table_->periodic()) {
+        refine_block<true>(candidates, block, query_x, source_x);
+      } else {
+        refine_block<false>(candidates, block, query_x, source_x);
+      }
+    }
+  });
+}
+
+template <int D>
+template <bool periodic>
+void NeighborList<D>::refine_block(const NeighborList& candidates, std::size_t block, const ConstVectorView<D>& query_x,
+                                   const ConstVectorView<D>& source_x) {
+  const NeighborGrid<D>& queries = *queries_;
+  const Real support_squared = table_->support_squared_;
+  const std::size_t first_cell = block * cells_per_block;
+  const std::size_t last_cell = std::min(queries.occupied_cells(), first_cell + cells_per_block);
+  IndexArray& out = blocks_[block];
+  out.size = 0;
+  for (Index i = queries.cell_start_[first_cell]; i < queries.cell_start_[last_cell]; ++i) {
+    const Vector<D> x = query_x[i];
+    const std::uint32_t* const entries = candidates.entries(i);
+    const Index total = candidates.span_[i].count;
+    const std::size_t first_entry = out.size;
+    for (Index first = 0; first < total; first += 64) {
+      // The candidates' positions are gathered by index, 64 at a time, in a loop the compiler
+      // vectorises, as in fill_block.
+      const std::uint32_t* const entry = entries + first;
+      const Index count = std::min<Index>(64, total - first);
+      std::uint64_t mask = 0;
+      for (Index k = 0; k < count; ++k) {
+        const std::uint32_t j = periodic ? entry[k] & index_mask : entry[k];
+        Real r2 = 0;
+        for (int d = 0; d < D; ++d) {
+          const Real x_image = periodic ? x[d] - table_->shifts_[entry[k] >> index_bits][d] : x[d];
+          const Real xij = x_image - source_x.component[d][j];
+          r2 += xij * xij;
+        }
+        mask |= r2 < support_squared ? bit[k] : 0;
+      }
+      append_set_bits(mask, out, [&](int k) { return entry[std::min<Index>(Index(k), count - 1)]; });
+    }
+    span_[i] = {static_cast<std::uint32_t>(first_entry), static_cast<std::uint32_t>(out.size - first_entry)};
   }
 }
 

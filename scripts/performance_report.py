@@ -317,6 +317,21 @@ def main():
                 w(f"| {feature} | {off:.2f} | {on:.2f} | {100 * (on / off - 1):+.1f}% |")
         w("")
 
+    # ---- Skin ---------------------------------------------------------------------------------
+    skins = sorted((name, row) for name, row in double.items() if name.startswith("BM_Skin/"))
+    if skins:
+        w("## Neighbour lists with a skin\n")
+        w("`solver.neighbor_skin` on the reference 3D dam break from t = 0.25 s (the front running), 2 threads,")
+        w("double: the fluid is re-sorted and the candidate lists (support + skin) rebuilt only when a particle")
+        w("has moved half the skin; every step refines them to the pairs inside the support. *search* includes")
+        w("that refinement.\n")
+        w("| benchmark | ms/step | particle-steps/s | builds per step | search | B/particle |")
+        w("|---|--:|--:|--:|--:|--:|")
+        for name, row in skins:
+            w(f"| {name} | {ms(row):.2f} | {mega(row['particle-steps/s'])} | {row['builds/step']:.2f} | "
+              f"{fmt_share(row, 'f_nbr')} | {row['B/particle']:.0f} |")
+        w("")
+
     # ---- Neighbour search ---------------------------------------------------------------------
     if neighbor:
         w("## Neighbour search variants (`neighbor_bench`, 2 threads, double)\n")

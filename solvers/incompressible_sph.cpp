@@ -85,7 +85,8 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
       reference_sound_speed_(setup::reference_sound_speed(setup::single_material(scene))),
       kinematic_viscosity_(static_cast<Real>(setup::single_material(scene).kinematic_viscosity)),
       gravity_(setup::gravity_at<D>(scene, scene.time.start)),
-      neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_) {
+      neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
+                 setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
   if (!(reference_sound_speed_ > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   if (scene.domain.inflow) throw std::invalid_argument(scene.source + ": a domain inflow needs the wcsph scheme");

@@ -98,6 +98,18 @@ GridDomain<D> grid_domain(const scene::Scene& scene) {
   return domain;
 }
 
+Real neighbor_skin(const scene::Scene& scene, Real support_radius) {
+  const double spacings = scene.solver.neighbor_skin.value_or(scene::default_neighbor_skin(scene.solver.scheme));
+  Real skin = static_cast<Real>(spacings * scene.particle_spacing);
+  for (int d = 0; d < scene.dimension; ++d) {
+    if (!scene.domain.periodic[d]) continue;
+    // A periodic axis needs 3 cells of support + skin (with room for the grid's cell margin).
+    const Real length = static_cast<Real>(scene.domain.box.max[d] - scene.domain.box.min[d]);
+    skin = std::min(skin, std::max(Real(0), length / Real(3.003) - support_radius));
+  }
+  return skin;
+}
+
 template <int D>
 Real particle_mass(const scene::Scene& scene, const AnyKernel<D>& kernel, Real rest_density) {
   return rest_density / std::visit([&](const auto& k) { return lattice_kernel_sum<D>(k, scene); }, kernel);

@@ -32,6 +32,10 @@ Real reference_sound_speed(const scene::Material& material);
 template <int D>
 GridDomain<D> grid_domain(const scene::Scene& scene);
 
+/// The neighbour lists' skin in metres: solver.neighbor_skin particle spacings (or the scheme's
+/// default), less where a periodic axis could not otherwise hold three cells of support + skin.
+Real neighbor_skin(const scene::Scene& scene, Real support_radius);
+
 /// ρ0 / Σ_k W(|k| Δx): the mass that gives a particle deep in the lattice exactly the rest density.
 template <int D>
 Real particle_mass(const scene::Scene& scene, const AnyKernel<D>& kernel, Real rest_density);

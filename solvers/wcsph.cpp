@@ -38,7 +38,8 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
            setup::reference_sound_speed(setup::reference_material(scene)),
            static_cast<Real>(scene.solver.tait_exponent), static_cast<Real>(scene.solver.background_pressure)),
       kinematic_viscosity_(static_cast<Real>(setup::reference_material(scene).kinematic_viscosity)),
-      neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_) {
+      neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
+                 setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
   if (!(eos_.sound_speed() > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   if (scene::fluid_material_count(scene) > 1) {

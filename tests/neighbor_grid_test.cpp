@@ -13,6 +13,7 @@
 #include "tide/core/log.hpp"
 #include "tide/neighbor/morton.hpp"
 #include "tide/neighbor/neighbor_list.hpp"
+#include "tide/solvers/fluid_wall_neighbors.hpp"
 
 namespace tide {
 namespace {
@@ -412,9 +413,137 @@ TEST(CrossNeighbors, FindsTheBruteForceNeighboursOfSourcesInACorner) {
   EXPECT_GT(pairs, 0u);
 }
 
+// Moves every particle by a random offset of length up to `reach` (a quarter of them by exactly
+// `reach`), in a fixed sequence.
+void move_by_up_to(ParticleSet<3>& set, Real reach, unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  auto x = set[set.position()];
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    Vector<3> direction(Real(normal(random)), Real(normal(random)), Real(normal(random)));
+    const Real length = i % 4 == 0 ? reach : reach * Real(unit(random));
+    x.set(i, x[i] + length / direction.norm() * direction);
+  }
+}
+
+// Which particles (by id) each particle (by id) finds through `list`.
+std::vector<std::vector<Index>> found_by_id(const NeighborList<3>& list, const ParticleSet<3>& queries,
+                                            const ParticleSet<3>& sources) {
+  const auto qx = queries[queries.position()];
+  const auto sx = sources[sources.position()];
+  const auto query_ids = queries[queries.id()];
+  const auto source_ids = sources[sources.id()];
+  std::vector<std::vector<Index>> found(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    list.for_each(i, qx, sx, [&](Index j, const Vector<3>&, Real) { found[query_ids[i]].push_back(source_ids[j]); });
+    std::sort(found[query_ids[i]].begin(), found[query_ids[i]].end());
+  }
+  return found;
+}
+
+// A list built on grids with a skin holds candidates up to support + skin; after every particle
+// has moved up to half the skin, its refinement is exactly the brute-force neighbours at the new
+// positions, in the candidates' order, on closed and periodic domains.
+class RefinedList : public testing::TestWithParam<bool> {};
+
+TEST_P(RefinedList, IsTheBruteForceNeighboursAfterMovesOfUpToHalfTheSkin) {
+  const GridDomain<3> domain = test_domain<3>(GetParam());
+  const Real skin = Real(0.3) * support;
+  NeighborGrid<3> grid(domain, support, SortAlgorithm::radix, CellLookup::automatic, skin);
+  ParticleSet<3> set = particles_at(make_cloud<3>(Cloud::clustered, domain, grid.cell_size()));
+  ASSERT_EQ(grid.update(set), 0u);
+  const auto x = std::as_const(set)[set.position()];
+  NeighborList<3> candidates;
+  candidates.build(grid, x, grid.own_neighbors(), x);
+  std::vector<std::vector<Index>> candidate_order(set.size());
+  for (std::size_t i = 0; i < set.size(); ++i)
+    candidates.for_each(i, x, x, [&](Index j, const Vector<3>&, Real) { candidate_order[i].push_back(j); });
+
+  move_by_up_to(set, skin / 2, 7);
+  NeighborList<3> list;
+  list.refine(candidates, x, x);
+  const std::vector<std::vector<Index>> found = found_by_id(list, set, set);
+  const auto ids = std::as_const(set)[set.id()];
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    ASSERT_EQ(found[ids[i]], brute_force<3>(x[i], set, domain)) << "particle id " << ids[i];
+    pairs += found[ids[i]].size();
+    std::vector<Index> order;
+    list.for_each(i, x, x, [&](Index j, const Vector<3>&, Real) { order.push_back(j); });
+    auto next = candidate_order[i].begin();
+    for (const Index j : order) {
+      next = std::find(next, candidate_order[i].end(), j);
+      ASSERT_NE(next, candidate_order[i].end()) << "particle id " << ids[i] << ": not in the candidates' order";
+      ++next;
+    }
+  }
+  EXPECT_GT(pairs, 10 * set.size());
+}
+
+INSTANTIATE_TEST_SUITE_P(Domains, RefinedList, testing::Bool(),
+                         [](const testing::TestParamInfo<bool>& info) { return info.param ? "periodic" : "closed"; });
+
+// FluidWallNeighbors with a skin keeps its sort and candidates while every particle has moved
+// less than half the skin, rebuilds when one has moved farther or left the domain, and the
+// fluid's lists are the brute-force neighbours at every update.
+TEST(FluidWallNeighbors, RebuildsOnlyWhenAParticleOutrunsHalfTheSkin) {
+  const GridDomain<3> domain = test_domain<3>(false);
+  const Real skin = Real(0.3) * support;
+  FluidWallNeighbors<3> neighbors(domain, support, skin);
+  ParticleSet<3> walls = particles_at(make_cloud<3>(Cloud::sheet, domain, neighbors.fluid_grid().cell_size()));
+  std::vector<Vector<3>> inner;
+  for (const Vector<3>& p : make_cloud<3>(Cloud::uniform, domain, neighbors.fluid_grid().cell_size())) {
+    bool away_from_sides = true;
+    for (int d = 0; d < 3; ++d) away_from_sides = away_from_sides && p[d] > skin && p[d] < domain.upper[d] - skin;
+    if (away_from_sides) inner.push_back(p);
+  }
+  ParticleSet<3> fluid = particles_at(inner);
+  neighbors.set_walls(walls);
+  const auto expect_brute_force = [&](const char* when) {
+    const auto x = std::as_const(fluid)[fluid.position()];
+    const auto wall_x = std::as_const(walls)[walls.position()];
+    const auto ids = std::as_const(fluid)[fluid.id()];
+    const auto wall_ids = std::as_const(walls)[walls.id()];
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      std::vector<Index> found;
+      neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<3>&, Real) { found.push_back(ids[j]); });
+      std::sort(found.begin(), found.end());
+      ASSERT_EQ(found, brute_force<3>(x[i], fluid, domain)) << when << ", fluid id " << ids[i];
+      found.clear();
+      neighbors.for_each_wall_neighbor(i, x, wall_x,
+                                       [&](Index b, const Vector<3>&, Real) { found.push_back(wall_ids[b]); });
+      std::sort(found.begin(), found.end());
+      ASSERT_EQ(found, brute_force<3>(x[i], walls, domain)) << when << ", fluid id " << ids[i] << " to walls";
+    }
+  };
+
+  EXPECT_EQ(neighbors.update_fluid(fluid, walls), 0u);
+  EXPECT_EQ(neighbors.builds(), 1u);
+  expect_brute_force("first build");
+  move_by_up_to(fluid, skin / 4, 1);
+  move_by_up_to(fluid, skin / 4, 2);  // at most half the skin in all
+  EXPECT_EQ(neighbors.update_fluid(fluid, walls), 0u);
+  EXPECT_EQ(neighbors.builds(), 1u) << "every particle within half the skin of where it was sorted";
+  expect_brute_force("after moves of up to half the skin");
+
+  auto x = fluid[fluid.position()];
+  x.set(0, x[0] + Vector<3>(x[0][0] < Real(0.5) ? skin : -skin, 0, 0));
+  EXPECT_EQ(neighbors.update_fluid(fluid, walls), 0u);
+  EXPECT_EQ(neighbors.builds(), 2u) << "one particle beyond half the skin";
+  expect_brute_force("after one particle moved a skin");
+
+  x.set(0, Vector<3>(-1, 0.5, 0.5));
+  EXPECT_EQ(neighbors.update_fluid(fluid, walls), 1u);
+  EXPECT_EQ(neighbors.builds(), 3u) << "one particle outside the domain";
+  expect_brute_force("after one particle left");
+}
+
 TEST(NeighborGrid, RejectsBadGeometry) {
   GridDomain<3> domain;
   EXPECT_THROW(NeighborGrid<3>(domain, 0), std::invalid_argument);
+  EXPECT_THROW(NeighborGrid<3>(domain, Real(0.1), SortAlgorithm::radix, CellLookup::automatic, -1),
+               std::invalid_argument);
   domain.periodic = {true, false, false};
   EXPECT_THROW(NeighborGrid<3>(domain, Real(0.4)), std::invalid_argument);  // fewer than 3 periodic cells
   domain.upper[1] = -1;

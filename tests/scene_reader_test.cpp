@@ -323,6 +323,15 @@ TEST(SceneReader, ReadsTheStabilityOptions) {
   EXPECT_EQ(defaults.solver.max_mach_number, 1);
 }
 
+TEST(SceneReader, ReadsTheNeighbourSkin) {
+  EXPECT_EQ(parse(with(full_2d_scene(), "/solver/neighbor_skin", 0.5)).solver.neighbor_skin, 0.5);
+  EXPECT_EQ(parse(with(full_2d_scene(), "/solver/neighbor_skin", 0)).solver.neighbor_skin, 0.0);
+  EXPECT_FALSE(parse(minimal_scene()).solver.neighbor_skin.has_value());  // the scheme's default
+  EXPECT_EQ(scene::default_neighbor_skin(scene::Scheme::wcsph), 0.3);
+  EXPECT_EQ(scene::default_neighbor_skin(scene::Scheme::dfsph), 0);
+  expect_refused(with(full_2d_scene(), "/solver/neighbor_skin", -0.1), "/solver/neighbor_skin", "a number >= 0");
+}
+
 TEST(SceneReaderRefuses, StabilityOptionsOutOfRange) {
   expect_refused(with(full_2d_scene(), "/solver/artificial_stress", -0.1), "/solver/artificial_stress",
                  "a number >= 0");

@@ -9,6 +9,7 @@
 
 #include "inflow_scenes.hpp"
 #include "multiphase_scenes.hpp"
+#include "small_scenes.hpp"
 #include "tide/core/kernels/cubic_spline.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
@@ -85,14 +86,7 @@ std::vector<Real> state_after_100_steps(Simulation<2>& simulation) {
 std::vector<Real> state_after_100_steps(int threads, scene::Scheme scheme, scene::DensityMethod density,
                                         scene::Shifting shifting, double artificial_stress = 0, bool clamp = true) {
   const ThreadLimit limit(threads);
-  scene::Scene s;
-  s.source = "thread determinism";
-  s.particle_spacing = 0.01;
-  s.smoothing_ratio = 1.7;
-  s.materials.push_back({"water", 1000, 1e-6, std::nullopt, 2.0});
-  s.fluid.push_back({0, scene::Box{{0, 0, 0}, {0.2, 0.4, 0}}});
-  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {0.6, 0.5, 0}}, true};
-  s.domain.box = {{-0.03, -0.03, 0}, {0.63, 1.0, 0}};
+  scene::Scene s = small_dam_break_2d();
   s.solver.scheme = scheme;
   s.solver.density = density;
   s.solver.shifting = shifting;

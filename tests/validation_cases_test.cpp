@@ -123,18 +123,21 @@ TEST(ValidationCases, DamBreakFront3DFollowsTheExperiments) {
   }
 }
 
-// H/Δx = 40 (3200 particles, 8257 steps, 45 s on 2 shared cores): against Buchner's downstream-wall
-// pressure, filtered over 0.1 in τ = t sqrt(g/H). Measured: first peak −0.8%, its time 0.245 late,
-// impact (half the peak reached) 0.096 late, L2 error 0.453. The filtered peak scatters between
-// resolutions (+149% at H/Δx = 20, +14% at 80), so its bound is that scatter, ±20%, not 25% of a
-// value that happens to be near zero; a wall that lets the water through or a missing impact
-// moves it by −100%. The others: the measured value + 25%.
+// H/Δx = 40 (3200 particles, about 8250 steps, 30 s on 2 cores): against Buchner's downstream-wall
+// pressure, filtered over 0.1 in τ = t sqrt(g/H). The flow before the impact is chaotic: two runs
+// that differ only in rounding (another neighbour-list skin, or the CFL number × (1 + 10^-9); the
+// particles agree to 10^-19 m after two steps) drift apart tenfold every 250 steps and by a third of
+// a spacing when the water reaches the wall. Twelve such runs (2026-12-01, double) span: first peak
+// −5%…+32%, its time 0.007…0.673 late, impact (half the peak reached) 0.035…0.178 late, L2 error
+// 0.358…0.533. The bounds are those extremes + 25%; a bound inside them would test the rounding.
+// A wall that lets the water through or a missing impact moves the peak by −100% and the times by
+// more than a unit of τ.
 TEST(ValidationCases, DamBreakWallPressureFollowsBuchner) {
   const RunRecord r = run_at_test_resolution("dam_break_buchner");
-  EXPECT_LE(std::abs(metric(r, "first_peak_error")), 0.2);
-  EXPECT_LE(std::abs(metric(r, "first_peak_time_error")), 0.31);
-  EXPECT_LE(std::abs(metric(r, "impact_time_error")), 0.12);
-  EXPECT_LE(metric(r, "pressure_l2_error"), 0.57);
+  EXPECT_LE(std::abs(metric(r, "first_peak_error")), 0.4);
+  EXPECT_LE(std::abs(metric(r, "first_peak_time_error")), 0.84);
+  EXPECT_LE(std::abs(metric(r, "impact_time_error")), 0.22);
+  EXPECT_LE(metric(r, "pressure_l2_error"), 0.67);
 }
 
 // The Lobovsky scene at H/Δx = 12 (1724 particles, 6 across the width, 2445 steps, 52 s on 2

@@ -173,6 +173,9 @@ struct Solver {
   double background_pressure = 0;       // Pa, added to the equation of state (closed or periodic flows)
   Shifting shifting = Shifting::none;   // particle shifting after each step (Lind et al. 2012)
   double artificial_stress = 0;         // ε of Monaghan's (2000) artificial stress; 0: off
+  // Particle spacings the neighbour lists reach beyond the support, so that they (and the sort)
+  // are kept until some particle has moved half as far; unset: default_neighbor_skin
+  std::optional<double> neighbor_skin;
   // Incompressible schemes (dfsph, iisph) only:
   double max_density_error = 0.0005;    // pressure solve ends when the mean density error is below this share of ρ0
   double max_divergence_error = 0.001;  // DFSPH divergence solve: mean error of Δt Dρ/Dt, as a share of ρ0
@@ -180,6 +183,12 @@ struct Solver {
   int max_failed_solves = 10;           // consecutive steps whose solve missed its threshold before the run stops
   SurfaceTension surface_tension;
 };
+
+/// The skin without solver.neighbor_skin: 0.3 spacings for wcsph, where a step moves a particle a
+/// few hundredths of a spacing and the lists then serve about 4 steps (bench/results/notes.md,
+/// "Neighbour lists with a skin"); 0 for dfsph and iisph, whose steps are about 6 times longer,
+/// so that a skin that small would be outrun every step.
+inline double default_neighbor_skin(Scheme scheme) { return scheme == Scheme::wcsph ? 0.3 : 0; }
 
 struct Time {
   double start = 0;

@@ -120,6 +120,7 @@ class CrossNeighbors {
   friend class NeighborList<D>;
   std::array<Vector<D>, D == 2 ? 9 : 27> shifts_{};
   Real support_squared_ = 0;
+  Real list_radius_squared_ = 0;             // (support + skin)²
   std::vector<std::uint32_t> range_offset_;  // query cell c: ranges [offset[c], offset[c+1])
   std::vector<SourceRun> runs_;
   std::vector<std::uint8_t> run_shifts_;  // empty unless the domain has a periodic axis
@@ -129,6 +130,11 @@ class CrossNeighbors {
 /// the Morton code of their cell. After `update`, every cell is a contiguous index range and
 /// every occupied cell knows the (merged) ranges of its 3^D neighbouring cells.
 ///
+/// With a skin s > 0 the cells are at least support + s wide: while no particle has moved more
+/// than s/2 since the update, every walk (and a NeighborList of radius support + s built at the
+/// update) still finds every pair inside the support at the current positions, so the sort and
+/// the tables can be kept for several steps (a Verlet list with a skin; Verlet 1967).
+///
 /// Domain policy: on a periodic axis, positions are wrapped into [lower, upper). A particle
 /// outside [lower, upper) on a non-periodic axis, or with a non-finite coordinate, is removed
 /// from the set by `update`, which logs a warning and counts it.
@@ -136,7 +142,7 @@ template <int D>
 class NeighborGrid {
  public:
   NeighborGrid(const GridDomain<D>& domain, Real support_radius, SortAlgorithm sort = SortAlgorithm::radix,
-               CellLookup lookup = CellLookup::automatic);
+               CellLookup lookup = CellLookup::automatic, Real skin = 0);
 
   /// Wraps periodic positions, sorts the particles by cell code (one gather per field),
   /// removes particles outside the domain and rebuilds the cell table. Returns the number of
@@ -165,6 +171,7 @@ class NeighborGrid {
   void for_each_neighbor_of(const Vector<D>& point, const ConstVectorView<D>& x, F&& f) const;
 
   Real support_radius() const { return support_radius_; }
+  Real skin() const { return skin_; }
   const GridDomain<D>& domain() const { return domain_; }
   const Vector<D>& cell_size() const { return cell_size_; }
   const std::array<std::uint32_t, D>& cell_counts() const { return cell_counts_; }
@@ -208,6 +215,7 @@ class NeighborGrid {
   GridDomain<D> domain_;
   Real support_radius_;
   Real support_squared_;
+  Real skin_;
   SortAlgorithm sort_;
   CellLookup lookup_;
   CellLookup active_lookup_ = CellLookup::hash;

@@ -18,9 +18,12 @@
 namespace tide {
 
 /// The neighbours of every query particle, found once per step and walked by every pass (and
-/// every sweep of a pressure solve) until the particles move again: a Verlet list without a skin
-/// (Verlet 1967), so it is exact and the passes see the same neighbours in the same order as the
-/// cell walk of CrossNeighbors, which keeps the sums bitwise identical.
+/// every sweep of a pressure solve) until the particles move again (Verlet 1967). Built from a
+/// table of grids without a skin, it holds the pairs inside the support in the order of the cell
+/// walk of CrossNeighbors, which keeps the sums bitwise identical to that walk's. Built from
+/// grids with a skin, it holds the candidates within support + skin, and `refine` then lists
+/// those inside the support at the current positions, in the same order, for the passes: the
+/// candidates serve until some particle has moved half the skin.
 ///
 /// The candidates of a cell's merged ranges (~216 for ~29 neighbours in 3D with cells of one
 /// support radius) are tested 64 at a time in a loop the compiler vectorises (a compare and an
@@ -37,6 +40,11 @@ class NeighborList {
   /// `queries` and `table` must outlive the list and stay unchanged until the next build.
   void build(const NeighborGrid<D>& queries, const ConstVectorView<D>& query_x, const CrossNeighbors<D>& table,
              const ConstVectorView<D>& source_x);
+
+  /// Lists the entries of `candidates` (built from grids with a skin) inside the support at the
+  /// positions `query_x` and `source_x`, in their order. `candidates` must outlive the list, and
+  /// its grids and table stay unchanged until the next refine.
+  void refine(const NeighborList& candidates, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x);
 
   /// Calls f(j, x_ij, r2) for every source neighbour j of query particle i, in the order of
   /// CrossNeighbors::for_each_in_cell, with the same x_ij = x_i − x_j (minimum image) and r2.
@@ -130,6 +138,10 @@ class NeighborList {
   // Lists the particles of cells [first_cell, last_cell) into `out`.
   void fill_block(std::size_t first_cell, std::size_t last_cell, const ConstVectorView<D>& query_x,
                   const ConstVectorView<D>& source_x, IndexArray& out);
+  // The same from the entries of `candidates`, for the block of cells `block`.
+  template <bool periodic>
+  void refine_block(const NeighborList& candidates, std::size_t block, const ConstVectorView<D>& query_x,
+                    const ConstVectorView<D>& source_x);
 
   const NeighborGrid<D>* queries_ = nullptr;
   const CrossNeighbors<D>* table_ = nullptr;

@@ -1,22 +1,34 @@
 #pragma once
 
+#include <cstddef>
 #include <utility>
+#include <vector>
 
 #include "tide/core/memory_usage.hpp"
+#include "tide/core/parallel.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/neighbor/neighbor_list.hpp"
 
 namespace tide {
 
 /// The neighbour tables a fluid-with-walls pass needs: fluid–fluid from the fluid grid, and the
-/// two cross tables fluid → walls and walls → fluid (both grids share domain and support). Each
-/// is walked through a NeighborList built once per fluid update, so the distance filter runs
-/// once per step, not once per pass and solver sweep.
+/// two cross tables fluid → walls and walls → fluid (both grids share domain, support and skin).
+/// Each is walked through a NeighborList, so the distance filter of the cell walk runs once per
+/// step, not once per pass and solver sweep.
+///
+/// Without a skin, every fluid update re-sorts the fluid and rebuilds the lists. With a skin s,
+/// an update re-sorts the fluid and rebuilds the candidate lists (radius support + s) only when
+/// they no longer hold every pair inside the support: the fluid has as many particles as at the
+/// last build, all inside the domain box (a particle outside is removed, or wrapped on a periodic
+/// axis, only by a rebuild), and none has moved more than s/2 since (two particles close in by s
+/// at most; the walls do not move). Every update then refines the candidates into the lists the
+/// passes walk.
 template <int D>
 class FluidWallNeighbors {
  public:
-  FluidWallNeighbors(const GridDomain<D>& domain, Real support_radius)
-      : fluid_grid_(domain, support_radius), wall_grid_(domain, support_radius) {}
+  FluidWallNeighbors(const GridDomain<D>& domain, Real support_radius, Real skin = 0)
+      : fluid_grid_(domain, support_radius, SortAlgorithm::radix, CellLookup::automatic, skin),
+        wall_grid_(domain, support_radius, SortAlgorithm::radix, CellLookup::automatic, skin) {}
 
   /// Sorts the walls once; they do not move, so what only a sort needs (the arena's bytes too:
   /// a tank can have more wall than fluid particles, and the arena would keep their size) and
@@ -28,20 +40,39 @@ class FluidWallNeighbors {
   }
 
   /// Re-sorts the fluid, relinks it with the walls (`walls` as last passed to set_walls) and
-  /// lists the neighbours; returns the particles removed. The passes' positions must stay those
-  /// of this call until the next one. The sort and reorder workspace lives in an arena kept
-  /// from step to step.
+  /// lists the neighbours (see the class for what a skin changes); returns the particles
+  /// removed. The passes' positions must stay those of this call until the next one. The sort
+  /// and reorder workspace lives in an arena kept from step to step.
   std::size_t update_fluid(ParticleSet<D>& fluid, const ParticleSet<D>& walls) {
-    const std::size_t removed = fluid_grid_.update(fluid, arena_);
-    fluid_to_walls_.build(fluid_grid_, wall_grid_);
-    walls_to_fluid_.build(wall_grid_, fluid_grid_);
+    const bool skin = fluid_grid_.skin() > 0;
+    std::size_t removed = 0;
     const auto fluid_x = std::as_const(fluid)[fluid.position()];
     const auto wall_x = walls[walls.position()];
-    fluid_list_.build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x);
-    fluid_to_walls_list_.build(fluid_grid_, fluid_x, fluid_to_walls_, wall_x);
-    walls_to_fluid_list_.build(wall_grid_, wall_x, walls_to_fluid_, fluid_x);
+    if (!skin || !candidates_hold(fluid)) {
+      removed = fluid_grid_.update(fluid, arena_);
+      fluid_to_walls_.build(fluid_grid_, wall_grid_);
+      walls_to_fluid_.build(wall_grid_, fluid_grid_);
+      (skin ? fluid_candidates_ : fluid_list_).build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x);
+      (skin ? fluid_to_walls_candidates_ : fluid_to_walls_list_).build(fluid_grid_, fluid_x, fluid_to_walls_, wall_x);
+      (skin ? walls_to_fluid_candidates_ : walls_to_fluid_list_).build(wall_grid_, wall_x, walls_to_fluid_, fluid_x);
+      ++builds_;
+      if (skin) {
+        built_x_.resize(D * fluid.size());
+        for_each_particle(fluid.size(), [&](std::size_t i) {
+          for (int d = 0; d < D; ++d) built_x_[d * fluid.size() + i] = fluid_x.component[d][i];
+        });
+      }
+    }
+    if (skin) {
+      fluid_list_.refine(fluid_candidates_, fluid_x, fluid_x);
+      fluid_to_walls_list_.refine(fluid_to_walls_candidates_, fluid_x, wall_x);
+      walls_to_fluid_list_.refine(walls_to_fluid_candidates_, wall_x, fluid_x);
+    }
     return removed;
   }
+
+  /// Fluid updates that re-sorted the fluid and rebuilt the lists, the first included.
+  std::size_t builds() const { return builds_; }
 
   template <class F>
   void for_each_fluid_neighbor(std::size_t i, const ConstVectorView<D>& fluid_x, F&& f) const {
@@ -76,14 +107,42 @@ class FluidWallNeighbors {
   void add_memory(MemoryUsage& usage) const;
 
  private:
+  bool candidates_hold(const ParticleSet<D>& fluid) const {
+    const std::size_t n = fluid.size();
+    if (builds_ == 0 || n != fluid_grid_.particle_count()) return false;
+    const auto x = fluid[fluid.position()];
+    const GridDomain<D>& domain = fluid_grid_.domain();
+    const Real half_skin = fluid_grid_.skin() / 2;
+    return reduce(
+        n, true,
+        [&](std::size_t i) {
+          Real moved2 = 0;
+          bool inside = true;
+          for (int d = 0; d < D; ++d) {
+            const Real xd = x.component[d][i];
+            inside = inside && xd >= domain.lower[d] && xd < domain.upper[d];
+            const Real moved = xd - built_x_[d * n + i];
+            moved2 += moved * moved;
+          }
+          return inside && moved2 <= half_skin * half_skin;
+        },
+        [](bool a, bool b) { return a && b; });
+  }
+
   ScratchArena arena_;
   NeighborGrid<D> fluid_grid_;
   NeighborGrid<D> wall_grid_;
   CrossNeighbors<D> fluid_to_walls_;
   CrossNeighbors<D> walls_to_fluid_;
+  // With a skin only: the lists of radius support + skin the walked lists are refined from.
+  NeighborList<D> fluid_candidates_;
+  NeighborList<D> fluid_to_walls_candidates_;
+  NeighborList<D> walls_to_fluid_candidates_;
   NeighborList<D> fluid_list_;
   NeighborList<D> fluid_to_walls_list_;
   NeighborList<D> walls_to_fluid_list_;
+  std::vector<Real> built_x_;  // with a skin: the fluid's positions at the last build, by component
+  std::size_t builds_ = 0;
 };
 
 template <int D>
@@ -103,6 +162,11 @@ void FluidWallNeighbors<D>::add_memory(MemoryUsage& usage) const {
   fluid_list_.add_memory(usage, "fluid list");
   fluid_to_walls_list_.add_memory(usage, "fluid-wall list");
   walls_to_fluid_list_.add_memory(usage, "wall-fluid list");
+  if (fluid_grid_.skin() == 0) return;
+  fluid_candidates_.add_memory(usage, "fluid candidates");
+  fluid_to_walls_candidates_.add_memory(usage, "fluid-wall candidates");
+  walls_to_fluid_candidates_.add_memory(usage, "wall-fluid candidates");
+  usage.add("fluid candidates.positions at build", built_x_);
 }
 
 }  // namespace tide

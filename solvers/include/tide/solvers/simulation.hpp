@@ -95,6 +95,9 @@ class Simulation {
   virtual Real smoothing_length() const = 0;
   virtual Real max_speed() const = 0;
   virtual std::size_t removed_total() const = 0;
+  /// Steps (and the start) that re-sorted the fluid and rebuilt its neighbour lists: every step
+  /// without a skin (solver.neighbor_skin), fewer with one.
+  virtual std::size_t neighbor_builds() const = 0;
   virtual const PassTimes& pass_times() const = 0;
   /// The passes one step runs, in order, as the scene assembled them: a pass a scene does not
   /// need is not in the list (DESIGN.md, "Pipelines").

@@ -57,6 +57,7 @@ class Wcsph final : public Simulation<D> {
   Real smoothing_length() const override { return smoothing_length_; }
   Real max_speed() const override { return max_speed_; }
   std::size_t removed_total() const override { return neighbors_.fluid_grid().removed_total(); }
+  std::size_t neighbor_builds() const override { return neighbors_.builds(); }
   const PassTimes& pass_times() const override { return pass_times_; }
   const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
   /// The phases of a multiphase scene; null for a single fluid.
