@@ -43,7 +43,10 @@ void append_set_bits(std::uint64_t mask, Array& out, Entry&& entry) {
 template <int D>
 void NeighborList<D>::IndexArray::reserve_more(std::size_t more) {
   if (size + more <= capacity) return;
-  const std::size_t grown = std::max(2 * capacity, size + more);
+  // By a quarter, not double: a block keeps its array from build to build, so the copies are
+  // paid in the first builds only, while a doubling's slack (up to half the array) stays for the
+  // whole run and was the largest single item of the step's memory.
+  const std::size_t grown = std::max(capacity + capacity / 4, size + more);
   auto larger = std::make_unique_for_overwrite<std::uint32_t[]>(grown);
   if (size > 0) std::memcpy(larger.get(), data.get(), size * sizeof(std::uint32_t));
   data = std::move(larger);
