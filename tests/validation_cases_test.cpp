@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "tide/validation/case.hpp"
@@ -80,10 +81,15 @@ TEST(ValidationCases, ChannelStartUpIncompressible) {
 
 // 25 particles across, with Fickian shifting: velocity L2 error 0.082 at t = 1 s, decay rate
 // error 0.064 (without shifting both exceed 0.9: the lattice pairs along the stagnation lines).
+// In double both are stable to 10^-8 under rounding-level changes (skin 0 or 0.3, the CFL number
+// × (1 + n 10^-9)). In float they are not: eight runs that differ by one ulp of the CFL number or
+// by the skin (2026-12-02) spread the decay rate error over 0.023–0.100 and the velocity error
+// over 0.077–0.094, so the float bounds are those extremes + 25%.
 TEST(ValidationCases, TaylorGreenVortex) {
   const RunRecord r = run_at_test_resolution("taylor_green");
-  EXPECT_LT(metric(r, "velocity_l2_error"), 0.1);
-  EXPECT_LT(metric(r, "decay_rate_error"), 0.08);
+  constexpr bool single = std::is_same_v<Real, float>;
+  EXPECT_LT(metric(r, "velocity_l2_error"), single ? 0.118 : 0.1);
+  EXPECT_LT(metric(r, "decay_rate_error"), single ? 0.125 : 0.08);
 }
 
 // a/Δx = 20: the front runs ahead of Martin & Moyce's experiment, whose gate took time to open;
