@@ -816,9 +816,14 @@ class SceneParser {
     const std::size_t fluids = scene::fluid_material_count(scene);
     const scene::Solver& solver = scene.solver;
     if (fluids > 1) {
-      if (solver.scheme != scene::Scheme::wcsph)
-        fail("/solver/scheme", "\"wcsph\" for a scene with several fluid materials (multiphase)",
-             "\"" + std::string(scheme_names[static_cast<std::size_t>(solver.scheme)].name) + "\"");
+      const double ratio = scene::fluid_density_ratio(scene);
+      if (solver.scheme != scene::Scheme::wcsph && ratio > scene::max_incompressible_density_ratio)
+        fail("/solver/scheme",
+             "\"wcsph\" for fluids whose rest densities differ by more than " +
+                 format_number(scene::max_incompressible_density_ratio) + " times (multiphase dfsph and iisph take " +
+                 format_number(scene::max_incompressible_density_ratio) + ")",
+             "\"" + std::string(scheme_names[static_cast<std::size_t>(solver.scheme)].name) + "\" with a ratio of " +
+                 format_number(ratio));
       if (solver.density != scene::DensityMethod::summation)
         fail("/solver/density", "\"summation\" for a scene with several fluid materials (number density)",
              "\"continuity\"");

@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/particle_sampling.hpp"
@@ -72,17 +74,6 @@ Real lattice_kernel_sum(const Kernel& kernel, const scene::Scene& scene) {
 const scene::Material& reference_material(const scene::Scene& scene) {
   if (scene.materials.empty()) throw std::invalid_argument(scene.source + ": the scene needs a fluid material");
   return scene.materials.at(scene.fluid.empty() ? 0 : scene.fluid.front().material);
-}
-
-const scene::Material& single_material(const scene::Scene& scene) {
-  if (scene.materials.empty()) throw std::invalid_argument(scene.source + ": the scene needs a fluid material");
-  for (const auto& block : scene.fluid) {
-    if (block.material != scene.fluid.front().material)
-      throw std::invalid_argument(scene.source +
-                                  ": this solver takes a single fluid material; several fluid materials need "
-                                  "solver.scheme \"wcsph\"");
-  }
-  return reference_material(scene);
 }
 
 Real reference_sound_speed(const scene::Material& material) {
@@ -191,20 +182,75 @@ ParticleSet<D> make_walls(const scene::Scene& scene, Real mass, Real rest_densit
   return walls;
 }
 
+namespace {
+
+// What a hydrostatic start measures depths with: |g|, the unit vector against gravity, and the
+// top of the fluid along it (its highest particle plus half a spacing, that particle's share).
 template <int D>
-void hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity, Real spacing, Real rest_density,
-                          std::span<Real> pressure) {
-  const auto x = fluid[fluid.position()];
+struct FluidColumn {
+  Real g;
+  Vector<D> up;
+  Real top;
+};
+
+// The column of `fluid` under `gravity`; none without gravity or particles, where the
+// hydrostatic pressure is zero (written into `pressure`).
+template <int D>
+std::optional<FluidColumn<D>> fluid_column(const ParticleSet<D>& fluid, const Vector<D>& gravity, Real spacing,
+                                           std::span<Real> pressure) {
   const Real g = gravity.norm();
   if (g == 0 || fluid.empty()) {
     std::fill(pressure.begin(), pressure.end(), Real(0));
-    return;
+    return std::nullopt;
   }
+  const auto x = fluid[fluid.position()];
   const Vector<D> up = -gravity / g;
   Real top = -std::numeric_limits<Real>::max();
   for (std::size_t i = 0; i < fluid.size(); ++i) top = std::max(top, up.dot(x[i]));
-  top += spacing / 2;
+  return FluidColumn<D>{g, up, top + spacing / 2};
+}
+
+}  // namespace
+
+template <int D>
+void hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity, Real spacing, Real rest_density,
+                          std::span<Real> pressure) {
+  const std::optional<FluidColumn<D>> column = fluid_column<D>(fluid, gravity, spacing, pressure);
+  if (!column) return;
+  const auto x = fluid[fluid.position()];
+  const auto [g, up, top] = *column;
   for_each_particle(fluid.size(), [&](std::size_t i) { pressure[i] = rest_density * g * (top - up.dot(x[i])); });
+}
+
+template <int D>
+void layered_hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity, Real spacing,
+                                  std::span<const Real> rest_densities, std::span<Real> pressure) {
+  const std::optional<FluidColumn<D>> column = fluid_column<D>(fluid, gravity, spacing, pressure);
+  if (!column) return;
+  const auto x = fluid[fluid.position()];
+  const auto [g, up, top] = *column;
+  // Slab k holds the particles at depths [k Δx, (k + 1) Δx) below the top: its mean rest density
+  // ρ̄_k, and the weight of the slabs above it, g Σ_{k' < k} ρ̄_k' Δx.
+  const auto slab = [&](std::size_t i) { return static_cast<std::size_t>((top - up.dot(x[i])) / spacing); };
+  std::vector<Real> density_sum, count;
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    const std::size_t k = slab(i);
+    if (k >= density_sum.size()) {
+      density_sum.resize(k + 1, 0);
+      count.resize(k + 1, 0);
+    }
+    density_sum[k] += rest_densities[i];
+    count[k] += 1;
+  }
+  std::vector<Real> mean(density_sum.size(), 0), above(density_sum.size() + 1, 0);
+  for (std::size_t k = 0; k < mean.size(); ++k) {
+    mean[k] = count[k] > 0 ? density_sum[k] / count[k] : Real(0);
+    above[k + 1] = above[k] + g * mean[k] * spacing;
+  }
+  for_each_particle(fluid.size(), [&](std::size_t i) {
+    const std::size_t k = slab(i);
+    pressure[i] = above[k] + g * mean[k] * (top - up.dot(x[i]) - Real(k) * spacing);
+  });
 }
 
 template <int D>
@@ -232,6 +278,8 @@ template Phases make_phases<2>(const scene::Scene&, const AnyKernel<2>&);
 template ParticleSet<2> make_fluid<2>(const scene::Scene&, Real, Real, FluidFields<2>&, const Phases*);
 template ParticleSet<2> make_walls<2>(const scene::Scene&, Real, Real, WallFields<2>&);
 template void hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, Real, std::span<Real>);
+template void layered_hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, std::span<const Real>,
+                                              std::span<Real>);
 template Vector<2> gravity_at<2>(const scene::Scene&, double);
 template GridDomain<3> grid_domain<3>(const scene::Scene&);
 template Real particle_mass<3>(const scene::Scene&, const AnyKernel<3>&, Real);
@@ -239,6 +287,8 @@ template Phases make_phases<3>(const scene::Scene&, const AnyKernel<3>&);
 template ParticleSet<3> make_fluid<3>(const scene::Scene&, Real, Real, FluidFields<3>&, const Phases*);
 template ParticleSet<3> make_walls<3>(const scene::Scene&, Real, Real, WallFields<3>&);
 template void hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, Real, std::span<Real>);
+template void layered_hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, std::span<const Real>,
+                                              std::span<Real>);
 template Vector<3> gravity_at<3>(const scene::Scene&, double);
 
 }  // namespace tide::setup

@@ -1,6 +1,6 @@
 #pragma once
 
-// What every scheme does to set up a scene: its single fluid material, the neighbour domain,
+// What every scheme does to set up a scene: its reference fluid material, the neighbour domain,
 // fluid and wall particles with their fields and mass, the gravity ramp, and the pass clock.
 
 #include <algorithm>
@@ -18,10 +18,6 @@
 #include "tide/solvers/wcsph.hpp"
 
 namespace tide::setup {
-
-/// The scene's one fluid material; std::invalid_argument when it has none, or several fluids
-/// use different ones.
-const scene::Material& single_material(const scene::Scene& scene);
 
 /// The material of the first fluid block: the reference of a multiphase scene (walls, reports).
 const scene::Material& reference_material(const scene::Scene& scene);
@@ -62,6 +58,13 @@ ParticleSet<D> make_walls(const scene::Scene& scene, Real mass, Real rest_densit
 template <int D>
 void hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity, Real spacing, Real rest_density,
                           std::span<Real> pressure);
+
+/// The same for fluids of several rest densities (`rest_densities`, by particle): p_i = |g| ∫ ρ̄ dz
+/// from the top down to particle i, ρ̄ the mean rest density of the particles in each slab of
+/// one spacing's depth; exact for fluids in horizontal layers.
+template <int D>
+void layered_hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity, Real spacing,
+                                  std::span<const Real> rest_densities, std::span<Real> pressure);
 
 /// Gravity at time t: the scene's, raised smoothly from zero over solver.gravity_ramp_time.
 template <int D>

@@ -24,6 +24,15 @@ struct StateSummary {
 
 }  // namespace
 
+void bound_density_by_phase(StateLimits& limits, Real rest_density, const Phases& phases,
+                            std::span<const Index> phase) {
+  limits.min_density /= rest_density;
+  limits.max_density /= rest_density;
+  limits.density_band = "rho/rho0 of its phase " + limits.density_band;
+  limits.phase = phase;
+  for (const Phase& p : phases.table) limits.inverse_rest_density.push_back(1 / p.rest_density);
+}
+
 template <int D>
 StateMaxima check_fluid_state(const ParticleSet<D>& fluid, const FluidFields<D>& f, const StateLimits& limits,
                               std::uint64_t step, double time) {

@@ -11,6 +11,7 @@
 
 #include "tide/core/particle_set.hpp"
 #include "tide/solvers/particle_fields.hpp"
+#include "tide/solvers/phases.hpp"
 
 namespace tide {
 
@@ -34,6 +35,10 @@ struct StateMaxima {
 /// Throws InstabilityError for the lowest-index fluid particle with a non-finite position,
 /// velocity, acceleration or density, a density outside the limits or a speed above them;
 /// otherwise returns the maxima. A deterministic reduction, so any thread count gives the same.
+/// Several fluids: turns the density bounds of `limits`, set for the reference rest density
+/// `rest_density`, into the same bounds on ρ_i / ρ0 of each particle's phase.
+void bound_density_by_phase(StateLimits& limits, Real rest_density, const Phases& phases, std::span<const Index> phase);
+
 template <int D>
 StateMaxima check_fluid_state(const ParticleSet<D>& fluid, const FluidFields<D>& f, const StateLimits& limits,
                               std::uint64_t step, double time);

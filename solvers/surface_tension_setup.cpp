@@ -2,8 +2,11 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <variant>
+
+#include "tide/solvers/time_step.hpp"
 
 namespace tide::setup {
 
@@ -101,11 +104,33 @@ passes::SurfaceTensionSettings surface_tension_settings(const scene::Scene& scen
   return s;
 }
 
+template <int D>
+SchemeSurfaceTension make_surface_tension(const scene::Scene& scene, const AnyKernel<D>& kernel, const Phases* phases,
+                                          Real rest_density, Real particle_mass, ParticleSet<D>& fluid,
+                                          FluidFields<D>& fields) {
+  const scene::SurfaceTensionModel model = scene.solver.surface_tension.model;
+  SchemeSurfaceTension tension;
+  if (model == scene::SurfaceTensionModel::none) return tension;
+  tension.settings = std::make_unique<const passes::SurfaceTensionSettings>(
+      surface_tension_settings<D>(scene, kernel, phases, rest_density, particle_mass / rest_density));
+  if (model != scene::SurfaceTensionModel::pairwise) fields.colour_gradient = fluid.add_vector("colour_gradient");
+  if (model == scene::SurfaceTensionModel::csf || model == scene::SurfaceTensionModel::pairwise) {
+    tension.capillary_limit = capillary_time_step(phases ? phases->lightest_density : rest_density,
+                                                  static_cast<Real>(scene.smoothing_ratio * scene.particle_spacing),
+                                                  tension.settings->coefficient);
+  }
+  return tension;
+}
+
 template Real pairwise_tension_per_strength<2>(Real, Real);
 template Real pairwise_tension_per_strength<3>(Real, Real);
 template passes::SurfaceTensionSettings surface_tension_settings<2>(const scene::Scene&, const AnyKernel<2>&,
                                                                     const Phases*, Real, Real);
 template passes::SurfaceTensionSettings surface_tension_settings<3>(const scene::Scene&, const AnyKernel<3>&,
                                                                     const Phases*, Real, Real);
+template SchemeSurfaceTension make_surface_tension<2>(const scene::Scene&, const AnyKernel<2>&, const Phases*, Real,
+                                                      Real, ParticleSet<2>&, FluidFields<2>&);
+template SchemeSurfaceTension make_surface_tension<3>(const scene::Scene&, const AnyKernel<3>&, const Phases*, Real,
+                                                      Real, ParticleSet<3>&, FluidFields<3>&);
 
 }  // namespace tide::setup

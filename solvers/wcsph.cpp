@@ -50,13 +50,9 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   }
   const Real particle_mass = setup::particle_mass<D>(scene, kernel_, eos_.rest_density());
   fluid_ = setup::make_fluid<D>(scene, particle_mass, eos_.rest_density(), fluid_fields_, phases());
-  const scene::SurfaceTensionModel tension_model = scene.solver.surface_tension.model;
-  if (tension_model != scene::SurfaceTensionModel::none) {
-    tension_ = std::make_unique<const passes::SurfaceTensionSettings>(setup::surface_tension_settings<D>(
-        scene, kernel_, phases(), eos_.rest_density(), particle_mass / eos_.rest_density()));
-    if (tension_model != scene::SurfaceTensionModel::pairwise)
-      fluid_fields_.colour_gradient = fluid_.add_vector("colour_gradient");
-  }
+  setup::SchemeSurfaceTension tension = setup::make_surface_tension<D>(scene, kernel_, phases(), eos_.rest_density(),
+                                                                       particle_mass, fluid_, fluid_fields_);
+  tension_ = std::move(tension.settings);
   if (scene.solver.density == scene::DensityMethod::continuity) {
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
     set_hydrostatic_density();
@@ -68,10 +64,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   time_step_rule_.kinematic_viscosity = scene.solver.viscosity == scene::ViscosityModel::laminar
                                             ? (phases_ ? phases_->largest_kinematic_viscosity : kinematic_viscosity_)
                                             : Real(0);
-  if (tension_model == scene::SurfaceTensionModel::csf || tension_model == scene::SurfaceTensionModel::pairwise) {
-    time_step_rule_.capillary_limit = capillary_time_step(phases_ ? phases_->lightest_density : eos_.rest_density(),
-                                                          smoothing_length_, tension_->coefficient);
-  }
+  time_step_rule_.capillary_limit = tension.capillary_limit;
   time_step_rule_.cfl = static_cast<Real>(scene.solver.cfl);
   time_step_rule_.viscous_number = static_cast<Real>(scene.solver.viscous_number);
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
@@ -100,19 +93,8 @@ void Wcsph<D>::build_pipeline() {
     pipeline_.push_back(phases_ ? "number_density" : "density_summation");
   }
   pipeline_.insert(pipeline_.end(), {"wall_state", "momentum"});
-  switch (solver.surface_tension.model) {
-    case scene::SurfaceTensionModel::none:
-      break;
-    case scene::SurfaceTensionModel::csf:
-      pipeline_.insert(pipeline_.end(), {"colour_gradient", "continuum_surface_force"});
-      break;
-    case scene::SurfaceTensionModel::akinci:
-      pipeline_.insert(pipeline_.end(), {"akinci_normal", "akinci_surface_force"});
-      break;
-    case scene::SurfaceTensionModel::pairwise:
-      pipeline_.push_back("pairwise_surface_force");
-      break;
-  }
+  for (const std::string_view pass : passes::surface_tension_passes(solver.surface_tension.model))
+    pipeline_.push_back(pass);
   pipeline_.push_back("kick");
   if (scene_.domain.inflow) pipeline_.push_back("inflow_velocity");
   pipeline_.push_back("state_check");
@@ -205,25 +187,10 @@ Real Wcsph<D>::wall_strength(Index a) const {
 template <int D>
 void Wcsph<D>::add_surface_tension() {
   const std::span<const Index> phase = phases_ ? std::as_const(fluid_)[fluid_fields_.phase] : std::span<const Index>{};
-  const passes::SurfaceTensionSettings& s = *tension_;
   std::visit(
       [&](const auto& kernel) {
-        switch (scene_.solver.surface_tension.model) {
-          case scene::SurfaceTensionModel::none:
-            break;
-          case scene::SurfaceTensionModel::csf:
-            passes::colour_gradient<D>(kernel, s, fluid_, fluid_fields_, phase, neighbors_);
-            passes::continuum_surface_force<D>(kernel, s, fluid_, fluid_fields_, neighbors_);
-            break;
-          case scene::SurfaceTensionModel::akinci:
-            passes::akinci_normal<D>(kernel, s, fluid_, fluid_fields_, phase, neighbors_);
-            passes::akinci_surface_force<D>(kernel, s, fluid_, fluid_fields_, phase, neighbors_, walls_, wall_fields_);
-            break;
-          case scene::SurfaceTensionModel::pairwise:
-            passes::pairwise_surface_force<D>(kernel, s, fluid_, fluid_fields_, phase, neighbors_, walls_,
-                                              wall_fields_);
-            break;
-        }
+        passes::surface_tension<D>(kernel, scene_.solver.surface_tension.model, *tension_, fluid_, fluid_fields_, phase,
+                                   neighbors_, walls_, wall_fields_);
       },
       kernel_);
 }
@@ -340,14 +307,7 @@ void Wcsph<D>::check_state() {
   limits.speed_bound = "faster than " + format_number(scene_.solver.max_mach_number) +
                        " x c0 = " + format_number(limits.max_speed) + " m/s, solver.max_mach_number";
   limits.note = [this] { return time_step_note(); };
-  if (phases_) {
-    // Each phase against its own rest density.
-    limits.min_density = limits.min_density / rho0;
-    limits.max_density = ratio;
-    limits.density_band = "rho/rho0 of its phase " + limits.density_band;
-    limits.phase = std::as_const(fluid_)[fluid_fields_.phase];
-    for (const Phase& phase : phases_->table) limits.inverse_rest_density.push_back(1 / phase.rest_density);
-  }
+  if (phases_) bound_density_by_phase(limits, rho0, *phases_, std::as_const(fluid_)[fluid_fields_.phase]);
   const StateMaxima maxima = check_fluid_state<D>(fluid_, fluid_fields_, limits, step_count_, time_);
   max_speed_ = maxima.speed;
   max_acceleration_ = maxima.acceleration;

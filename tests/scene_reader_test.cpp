@@ -405,7 +405,12 @@ TEST(SceneReaderRefuses, BadSurfaceTensionAndMultiphaseSettings) {
   expect_refused(with(two_fluid_scene(), "/solver/density", "continuity"), "/solver/density",
                  "\"summation\" for a scene with several fluid materials");
   expect_refused(with(two_fluid_scene(), "/solver/scheme", "dfsph"), "/solver/scheme",
-                 "\"wcsph\" for a scene with several fluid materials");
+                 "\"wcsph\" with surface tension");
+  const json incompressible_pair =
+      with(without(two_fluid_scene(), "/solver/surface_tension"), "/solver/scheme", "iisph");
+  EXPECT_EQ(parse(incompressible_pair).solver.scheme, scene::Scheme::iisph);
+  expect_refused(with(incompressible_pair, "/materials/1/rest_density", 80), "/solver/scheme",
+                 "\"wcsph\" for fluids whose rest densities differ by more than 10 times");
   expect_refused(with(two_fluid_scene(), "/solver/artificial_stress", 0.2), "/solver/artificial_stress",
                  "0 for a scene with several fluid materials");
   expect_refused(with(full_2d_scene(), "/output/fields", {"position", "phase"}), "/output/fields/1",

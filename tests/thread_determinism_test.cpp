@@ -152,6 +152,21 @@ TEST(ThreadDeterminism, MultiphaseWithEachTensionModelIsBitwiseIdentical) {
   }
 }
 
+// Rayleigh–Taylor (density ratio 1.8) with each incompressible scheme: the number-density
+// density, pressure factor, continuity and pressure passes, and the mean-pressure reductions.
+TEST(ThreadDeterminism, IncompressibleMultiphaseIsBitwiseIdentical) {
+  for (auto scheme : {scene::Scheme::dfsph, scene::Scheme::iisph}) {
+    SCOPED_TRACE(static_cast<int>(scheme));
+    const auto state = [scheme](int threads) {
+      const ThreadLimit limit(threads);
+      scene::Scene s = test::rayleigh_taylor_scene(0.04);
+      s.solver.scheme = scheme;
+      return state_after_100_steps(*make_simulation<2>(s));
+    };
+    EXPECT_TRUE(same_bytes(state(1), state(2)));
+  }
+}
+
 // The inflow buffer of a pseudo-periodic channel, whose fluid crosses the periodic seam.
 TEST(ThreadDeterminism, InflowChannelIsBitwiseIdentical) {
   const auto state = [](int threads) {

@@ -3,6 +3,7 @@
 // Density rate from the continuity equation, with δ-SPH density diffusion.
 
 #include <cmath>
+#include <span>
 #include <type_traits>
 
 #include "tide/core/parallel.hpp"
@@ -27,8 +28,10 @@ struct DensityDiffusion {
 /// δ h c0 Σ_j 2 (ρ_j − ρ_i − ρ^H_ji) (x_ji·∇W_ij) / (r² + 0.01 h²) · m_j/ρ_j, between fluid
 /// particles only. ρ^H_ji, the hydrostatic density difference between j and i, is subtracted as
 /// in Fourtakas et al. 2019 (eq. 11): diffusing it would slowly flatten the hydrostatic density
-/// profile under gravity. ρ^H_ji = ρ(p = −ρ0 g·x_ij) − ρ0 from the equation of state.
-template <int D, class Kernel>
+/// profile under gravity. ρ^H_ji = ρ(p = −ρ0 g·x_ij) − ρ0 from the equation of state. With
+/// `NumberDensity` (several fluids, ρ_i = m_i Σ_j W_ij: passes/density_summation.hpp), the rate of
+/// that density, Dρ_i/dt = m_i Σ_j v_ij·∇W_ij, without diffusion.
+template <int D, bool NumberDensity = false, class Kernel>
 void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                 const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
                 const DensityDiffusion<D>* diffusion) {
@@ -44,11 +47,19 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
   const Real diffusion_scale = diffusion ? diffusion->delta * h * diffusion->sound_speed : Real(0);
   const Real rest_density = diffusion ? diffusion->eos.rest_density() : Real(0);
   const Real rest_pressure = diffusion ? diffusion->eos.pressure(rest_density) : Real(0);  // the background pressure
+  // The weight of neighbour j's velocity: its mass, or 1 for the number density.
+  const auto weight = [&](std::span<const Real> masses, Index j) {
+    if constexpr (NumberDensity) {
+      return Real(1);
+    } else {
+      return masses[j];
+    }
+  };
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Vector<D> v_i = v[i];
     const Real rho_i = density[i];
     Real sum = 0;
-    if (diffusion) {
+    if (!NumberDensity && diffusion) {
       neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
         if (j == i) return;
         const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
@@ -67,7 +78,7 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
           const Real gradient_factor = kernel.derivative_over_r(std::sqrt(run.r2[k]));
           Real v_dot_grad_w = 0;
           for (int d = 0; d < D; ++d) v_dot_grad_w += (v_i[d] - v.component[d][j]) * (gradient_factor * run.x_ij[d][k]);
-          return mass[j] * v_dot_grad_w;
+          return weight(mass, j) * v_dot_grad_w;
         });
       });
     }
@@ -83,7 +94,7 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
           if constexpr (decltype(moving)::value) v_ib -= surface_velocity.component[d][b];
           v_dot_grad_w += v_ib * (gradient_factor * run.x_ij[d][k]);
         }
-        return wall_mass[b] * v_dot_grad_w;
+        return weight(wall_mass, b) * v_dot_grad_w;
       });
     };
     neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
@@ -93,6 +104,7 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
         add_wall_run(std::false_type{}, run);
       }
     });
+    if constexpr (NumberDensity) sum *= mass[i];
     rate[i] = sum;
   });
 }

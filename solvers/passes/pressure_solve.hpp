@@ -27,7 +27,10 @@ namespace tide::passes {
 /// ∂ρ*_i/∂p_i = −Δt²/α_i with the wall pressures held fixed: the factor α_i of Bender & Koschier
 /// 2017 (there per Δt², in the units of their stiffness κ = p/ρ) and the diagonal a_ii of Ihmsen
 /// et al. 2014 (Sec. 3.2). 0 for a particle without neighbours, which no pressure can compress.
-template <int D, class Kernel>
+/// With `NumberDensity` (several fluids: ρ_i = m_i Σ_j W_ij, the pressure force of Hu & Adams
+/// 2006 in pressure_velocity), the same derivative of that density,
+/// α_i = ρ_i² / (m_i² |Σ_j ∇W_ij + Σ_b ∇W_ib|² + m_i³ Σ_j |∇W_ij|² / m_j); for one mass both agree.
+template <int D, bool NumberDensity = false, class Kernel>
 void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                      const PressureSolveFields<D>& s, const FluidWallNeighbors<D>& neighbors,
                      const ParticleSet<D>& walls, const WallFields<D>& w) {
@@ -44,20 +47,31 @@ void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFie
     neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
       if (j == i) return;
       const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
-      fluid_sum += mass[j] * grad_w;
-      squares += mass[j] * squared_norm<D>(grad_w);
+      if constexpr (NumberDensity) {
+        fluid_sum += grad_w;
+        squares += squared_norm<D>(grad_w) / mass[j];
+      } else {
+        fluid_sum += mass[j] * grad_w;
+        squares += mass[j] * squared_norm<D>(grad_w);
+      }
     });
     neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
-      wall_sum += wall_mass[b] * kernel.gradient(x_ib, std::sqrt(r2));
+      const Vector<D> grad_w = kernel.gradient(x_ib, std::sqrt(r2));
+      wall_sum += NumberDensity ? grad_w : Vector<D>(wall_mass[b] * grad_w);
     });
-    const Real denominator = (fluid_sum + wall_sum).squaredNorm() + mass[i] * squares;
+    const Real m_i = mass[i];
+    const Real gradient_norm2 = (fluid_sum + wall_sum).squaredNorm();
+    const Real denominator =
+        NumberDensity ? m_i * m_i * (gradient_norm2 + m_i * squares) : gradient_norm2 + m_i * squares;
     factor[i] = denominator > 0 ? density[i] * density[i] / denominator : Real(0);
   });
 }
 
 /// v_i = v*_i − Δt [Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij + Σ_b m_b (p_i/ρ_i² + p_b/ρ_b²) ∇W_ib]: the
 /// velocity that pressure p (and the walls' pressure extrapolated from it) gives after the step.
-template <int D, class Kernel>
+/// With `NumberDensity`, the form of Hu & Adams 2006 (eq. 8) that the WCSPH momentum pass uses for
+/// several fluids: v_i = v*_i − (Δt/m_i) Σ_j (p_i V_i² + p_j V_j²) ∇W_ij with V = m/ρ (walls: m_b/ρ_b).
+template <int D, bool NumberDensity = false, class Kernel>
 void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                        const PressureSolveFields<D>& s, std::span<const Real> pressure,
                        const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
@@ -74,14 +88,18 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Real rho_i = density[i];
     const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
+    const Real inverse_mass_i = 1 / mass[i];
     // Without a branch, so that accumulate_along_offsets() vectorises it; the pair i–i adds an exact zero.
     const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a, std::span<const Real> masses,
                                    std::span<const Real> densities, std::span<const Real> pressures) {
       accumulate_along_offsets(run, a, [&](int k) {
         const Index j = run.index[k];
         const Real rho_j = densities[j];
-        return -masses[j] * (p_over_rho2_i + pressures[j] / (rho_j * rho_j)) *
-               kernel.derivative_over_r(std::sqrt(run.r2[k]));
+        const Real m_j = masses[j];
+        const Real term = NumberDensity
+                              ? mass[i] * p_over_rho2_i + m_j * m_j * inverse_mass_i * pressures[j] / (rho_j * rho_j)
+                              : m_j * (p_over_rho2_i + pressures[j] / (rho_j * rho_j));
+        return -term * kernel.derivative_over_r(std::sqrt(run.r2[k]));
       });
     };
     Vector<D> a = Vector<D>::Zero();

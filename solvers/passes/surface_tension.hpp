@@ -6,9 +6,11 @@
 #include <cmath>
 #include <numbers>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "tide/core/parallel.hpp"
+#include "tide/core/scene.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
@@ -212,6 +214,43 @@ void pairwise_surface_force(const Kernel&, const SurfaceTensionSettings& s, Part
     }
     acceleration.set(i, acceleration[i] + force / mass[i]);
   });
+}
+
+/// The passes of `model`, in the order surface_tension runs them: what a scheme's pipeline lists.
+inline std::vector<std::string_view> surface_tension_passes(scene::SurfaceTensionModel model) {
+  switch (model) {
+    case scene::SurfaceTensionModel::csf:
+      return {"colour_gradient", "continuum_surface_force"};
+    case scene::SurfaceTensionModel::akinci:
+      return {"akinci_normal", "akinci_surface_force"};
+    case scene::SurfaceTensionModel::pairwise:
+      return {"pairwise_surface_force"};
+    case scene::SurfaceTensionModel::none:
+      break;
+  }
+  return {};
+}
+
+/// Adds the tension of `model` to the acceleration in f (nothing for SurfaceTensionModel::none).
+template <int D, class Kernel>
+void surface_tension(const Kernel& kernel, scene::SurfaceTensionModel model, const SurfaceTensionSettings& s,
+                     ParticleSet<D>& fluid, const FluidFields<D>& f, std::span<const Index> phase,
+                     const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w) {
+  switch (model) {
+    case scene::SurfaceTensionModel::none:
+      break;
+    case scene::SurfaceTensionModel::csf:
+      colour_gradient<D>(kernel, s, fluid, f, phase, neighbors);
+      continuum_surface_force<D>(kernel, s, fluid, f, neighbors);
+      break;
+    case scene::SurfaceTensionModel::akinci:
+      akinci_normal<D>(kernel, s, fluid, f, phase, neighbors);
+      akinci_surface_force<D>(kernel, s, fluid, f, phase, neighbors, walls, w);
+      break;
+    case scene::SurfaceTensionModel::pairwise:
+      pairwise_surface_force<D>(kernel, s, fluid, f, phase, neighbors, walls, w);
+      break;
+  }
 }
 
 }  // namespace tide::passes

@@ -259,4 +259,23 @@ inline std::size_t fluid_material_count(const Scene& scene) {
   return static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
 }
 
+/// The largest ratio of the rest densities of the fluid's materials (1 for one material).
+inline double fluid_density_ratio(const Scene& scene) {
+  const std::vector<bool> used = fluid_materials_used(scene);
+  double lightest = 0, densest = 0;
+  for (std::size_t k = 0; k < used.size(); ++k) {
+    if (!used[k]) continue;
+    const double rho0 = scene.materials[k].rest_density;
+    lightest = lightest == 0 ? rho0 : std::min(lightest, rho0);
+    densest = std::max(densest, rho0);
+  }
+  return lightest > 0 ? densest / lightest : 1;
+}
+
+/// The largest fluid_density_ratio the incompressible schemes (dfsph, iisph) take: up to 10 their
+/// pressure solve holds two layers at rest in a closed box (spurious speeds below 0.06 sqrt(g L)
+/// over 7 s); at 30 it diverged within 4 s (docs/multiphase.md, "Incompressible schemes").
+/// WCSPH takes 1000.
+inline constexpr double max_incompressible_density_ratio = 10;
+
 }  // namespace tide::scene

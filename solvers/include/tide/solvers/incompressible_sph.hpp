@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "tide/solvers/fluid_wall_neighbors.hpp"
 #include "tide/solvers/incompressible_scheme.hpp"
 #include "tide/solvers/particle_fields.hpp"
+#include "tide/solvers/phases.hpp"
 #include "tide/solvers/simulation.hpp"
 #include "tide/solvers/time_step.hpp"
 
@@ -31,7 +33,11 @@ struct PressureSolveFields {
 /// pressure extrapolated from the fluid's before every sweep (passes/pressure_solve.hpp). The first
 /// solve starts from the hydrostatic pressure. A solve that misses its threshold within the iteration cap logs a
 /// warning; solver.max_failed_solves consecutive steps with such a miss stop the run with an
-/// InstabilityError. Every pass gathers, so results are bitwise identical for any thread count.
+/// InstabilityError. Several fluids (rest densities within max_incompressible_density_ratio of
+/// each other) take the number-density form of WCSPH's multiphase passes (density
+/// ρ_i = m_i Σ_j W_ij and the pressure force of Hu & Adams 2006), each particle's density driven
+/// to the rest density of its phase, from a layered hydrostatic start. Every pass gathers, so
+/// results are bitwise identical for any thread count.
 template <int D>
 class IncompressibleSph final : public Simulation<D> {
  public:
@@ -61,6 +67,8 @@ class IncompressibleSph final : public Simulation<D> {
   const PassTimes& pass_times() const override { return pass_times_; }
   const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
   double bytes_per_particle() const override;
+  /// The phases of a multiphase scene; null for a single fluid.
+  const Phases* phases() const { return phases_ ? &*phases_ : nullptr; }
 
  private:
   enum class Target { density, divergence };
@@ -80,6 +88,7 @@ class IncompressibleSph final : public Simulation<D> {
   Real reference_sound_speed_;  // c0 of the material: velocity scale of the artificial viscosity and speed bound
   Real kinematic_viscosity_;
   Vector<D> gravity_;  // at the time the non-pressure acceleration was computed
+  std::optional<Phases> phases_;
   TimeStepRule time_step_rule_;
   ParticleSet<D> fluid_;
   ParticleSet<D> walls_;
