@@ -6,11 +6,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
 #include "multiphase_measures.hpp"
 #include "multiphase_scenes.hpp"
+#include "tide/io/scene_reader.hpp"
 #include "tide/solvers/incompressible_sph.hpp"
 
 namespace tide {
@@ -29,6 +31,26 @@ TEST(IncompressibleMultiphase, RayleighTaylorGrowsWithinLinearTheory) {
     scene.solver.scheme = scheme;
     IncompressibleSph<2> simulation(scene);
     test::expect_rayleigh_taylor_growth(simulation, scheme == scene::Scheme::dfsph ? "dfsph" : "iisph");
+  }
+}
+
+// The shipped example scenes/rayleigh_taylor_2d.json is the set-up of the test above: the same
+// particles, phases and walls, and the same first step.
+TEST(IncompressibleMultiphase, ShippedRayleighTaylorSceneIsTheTestedSetUp) {
+  const scene::Scene shipped =
+      io::read_scene_file(std::filesystem::path(TIDE_SOURCE_SCENES_DIR) / "rayleigh_taylor_2d.json");
+  scene::Scene tested = test::rayleigh_taylor_scene(0.04);
+  tested.solver.scheme = scene::Scheme::dfsph;
+  IncompressibleSph<2> a(shipped), b(tested);
+  ASSERT_EQ(a.fluid().size(), b.fluid().size());
+  ASSERT_EQ(a.walls().size(), b.walls().size());
+  a.step();
+  b.step();
+  EXPECT_EQ(a.time(), b.time());
+  for (std::size_t i = 0; i < a.fluid().size(); ++i) {
+    ASSERT_EQ(a.fluid()[a.fluid_fields().phase][i], b.fluid()[b.fluid_fields().phase][i]) << i;
+    ASSERT_EQ(a.fluid()[a.fluid_fields().position][i], b.fluid()[b.fluid_fields().position][i]) << i;
+    ASSERT_EQ(a.fluid()[a.fluid_fields().velocity][i], b.fluid()[b.fluid_fields().velocity][i]) << i;
   }
 }
 
