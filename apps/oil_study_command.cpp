@@ -20,15 +20,16 @@ namespace {
 namespace fs = std::filesystem;
 
 /// One scene of the study: the parameters its name carries (scripts/oil_scenes.py names them
-/// oil_middle_h<height>_<orientation>_<wetting>, oil_upper_w<width>_<wetting> and, for the wetting
-/// comparison at a low Bond number, oil_wetting_h<height>_<orientation>_<wetting>, in mm) and its
+/// oil_middle_h<height>_<orientation>_<wetting>, oil_upper_w<width>_<wetting> and, at a low Bond
+/// number, oil_wetting_h<height>_<orientation>_<wetting> for the wetting comparison and
+/// oil_capillary_h<height>_<orientation>_<wetting> for the orientation comparison, in mm) and its
 /// recovery curve.
 struct OilRun {
   fs::path scene;
   std::string name;
-  std::string family;       // "middle", "upper" or "wetting" (a middle-fractured cavity)
-  double size = 0;          // middle, wetting: the fracture's height above the floor; upper: the throat's width (mm)
-  std::string orientation;  // middle, wetting: horizontal, rising or falling
+  std::string family;       // "middle", "upper", or "wetting" and "capillary" (middle-fractured cavities)
+  double size = 0;          // middle-fractured: the fracture's height above the floor; upper: the throat's width (mm)
+  std::string orientation;  // middle-fractured: horizontal, rising or falling
   std::string wetting;      // water_wet or oil_wet
   double end_time = 0;
   std::vector<double> times;
@@ -42,7 +43,7 @@ struct OilRun {
     const auto first = std::lower_bound(times.begin(), times.end(), times.back() - span);
     return recoveries.back() - recoveries[static_cast<std::size_t>(first - times.begin())];
   }
-  bool middle_fractured() const { return family == "middle" || family == "wetting"; }
+  bool middle_fractured() const { return family == "middle" || family == "wetting" || family == "capillary"; }
   std::string label() const {
     if (middle_fractured()) return "h = " + format(size) + " mm, " + orientation + ", " + wetting;
     return "w = " + format(size) + " mm, " + wetting;
@@ -246,6 +247,13 @@ int oil_study(const OilStudyOptions& options) {
       validation::draw_png(out / "wetting.png", [&](const fs::path& png) {
         return curves_script(png, runs, "wetting",
                              "middle-fractured cavity at a low Bond number, water-wet and oil-wet: oil recovery", out);
+      });
+    if (plotted("capillary"))
+      validation::draw_png(out / "capillary.png", [&](const fs::path& png) {
+        return curves_script(png, runs, "capillary",
+                             "middle-fractured cavity at cavity Bond number 7.8, each height and orientation: oil "
+                             "recovery",
+                             out);
       });
     std::cout << "tide: oil-study: plots in " << out.string() << '\n';
   } else {

@@ -26,6 +26,13 @@ spacings): with the 5-spacing support of the contact-line test (h = 5/3 spacings
 noise of these runs grew from +-200 to +-2500 Pa after 1.2-1.5 s. docs/multiphase.md also has the
 pair at 0.01 and 0.1 N/m, without gravity and with the 5-spacing support.
 
+The capillary family (oil_capillary_*) asks the orientation question where the interface holds:
+the nine middle-fractured cavities (heights 4, 8, 12 mm; horizontal, rising, falling) with water-wet
+walls at the wetting pair's Bond 7.8 settings (0.1 N/m: capillary length 7.1 mm; 30 degrees through
+the water, unlike_attraction false, 3 s). At the study's 0.01 N/m the jets of the stepped fractures
+break the interface up and carry oil from above the fracture's roof out (docs/multiphase.md,
+finding 1).
+
 Run from the repository root: python3 scripts/oil_scenes.py (rewrites scenes/oil_*.json).
 """
 
@@ -41,7 +48,7 @@ STEP_STUB = 4.0  # a stepped fracture runs this far at the cavity's height befor
 STEP = 6.0  # and rises or falls this much
 INJECTION = 0.05  # m/s in the inflow buffer
 BUFFER = 9.0  # mm, two kernel supports
-END_TIME = {"middle": 2.0, "upper": 2.0, "wetting": 3.0}
+END_TIME = {"middle": 2.0, "upper": 2.0, "wetting": 3.0, "capillary": 3.0}
 SOUND_SPEED = 8.0  # m/s: the gravity-driven flow in the cavity reaches 0.4 m/s
 BACKGROUND_PRESSURE = 2500.0  # Pa: well above the pressure noise rho c |dv| of that flow
 WATER_WET, OIL_WET = 45.0, 135.0  # static contact angle through the water, degrees
@@ -53,6 +60,12 @@ class Wetting:
     """The wetting family's settings (module docstring)."""
     TENSION = 0.3  # N/m: cavity Bond number 200 * 9.81 * 0.02**2 / 0.3 = 2.6
     WATER_WET, OIL_WET = 30.0, 150.0
+
+
+class Capillary:
+    """The capillary family's settings (module docstring)."""
+    TENSION = 0.1  # N/m: cavity Bond number 200 * 9.81 * 0.02**2 / 0.1 = 7.8
+    WATER_WET = 30.0
 
 
 def solid_boxes(open_rects, domain):
@@ -181,6 +194,26 @@ def wetting_pair(height):
     return scenes
 
 
+def capillary_family():
+    """The middle-fractured cavities of every height and orientation, water-wet, at the capillary
+    family's tension and contact-line settings (module docstring)."""
+    bond = (1000 - 800) * 9.81 * ((CAVITY[3] - CAVITY[2]) / 1000) ** 2 / Capillary.TENSION
+    scenes = []
+    for height in (4.0, 8.0, 12.0):
+        for step in (0.0, STEP, -STEP):
+            orientation = {0: "horizontal", STEP: "rising", -STEP: "falling"}[step]
+            description = (f"Zhou et al. 2010 orientation comparison where capillarity holds the interface "
+                           f"(scripts/oil_scenes.py): a 20 mm oil-filled cavity, {FRACTURE:g} mm fractures meeting "
+                           f"it {height:g} mm above its floor, {orientation}, water-wet walls "
+                           f"({Capillary.WATER_WET:g} degrees through the water), interfacial tension "
+                           f"{Capillary.TENSION:g} N/m (cavity Bond number {bond:.2g}), pairwise unlike_attraction "
+                           f"false; water injected at {INJECTION:g} m/s")
+            open_rects = [CAVITY] + stepped_fracture(height, FRACTURE, step)
+            scenes.append(scene(f"oil_capillary_h{height:g}_{orientation}_water_wet", open_rects, [CAVITY],
+                                Capillary.WATER_WET, END_TIME["capillary"], description, Capillary.TENSION, False))
+    return scenes
+
+
 def upper_fractured(width, contact_angle):
     """The water flows in a fracture above the cavity, joined to the cavity's ceiling by a vertical
     fracture of `width`, centred on it: the oil can leave only by gravity drainage through it."""
@@ -205,6 +238,7 @@ def all_scenes():
     for width in (2.0, 4.0, 6.0, 8.0, 10.0, 12.0):
         scenes.append(upper_fractured(width, WATER_WET))
     scenes += wetting_pair(8.0)
+    scenes += capillary_family()
     return scenes
 
 
