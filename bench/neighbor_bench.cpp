@@ -5,6 +5,7 @@
 //   BM_NeighborBuild/3D/N:1000000/radix/hash/threads:2/double
 //   BM_KernelSumSweep/3D/N:1000000/list/threads:2/double   (or cell_walk)
 //   BM_NeighborList/3D/N:1000000/threads:2/double      (building the per-step neighbour list)
+//   BM_NeighborRefine/3D/N:1000000/threads:2/double    (refining it from candidates with a skin)
 //   BM_CellRanges/3D/N:1000000/hash/threads:2/double   (one part of the build, 2 threads only)
 // The thread count is imposed with tide::ThreadLimit inside the benchmark (1 and 2 threads are
 // registered), the precision is tide::Real (TIDE_REAL_NAME). All times are wall-clock
@@ -259,6 +260,30 @@ void neighbor_list_build(benchmark::State& state, std::size_t n, int threads) {
   state.counters["list_B/particle"] = benchmark::Counter(double(list.bytes()) / double(particles.size()));
 }
 
+// The per-step refinement of a list with a skin (solver.neighbor_skin 0.3 spacings, the WCSPH
+// default): candidates within support + skin built at one update, then the exact list within the
+// support refined from them after the particles have moved (less than half the skin), timed.
+template <int D>
+void neighbor_list_refine(benchmark::State& state, std::size_t n, int threads) {
+  tide::ThreadLimit limit(threads);
+  const Cloud<D>& c = cloud<D>(n);
+  tide::ParticleSet<D> particles = make_particles(c);
+  tide::NeighborGrid<D> grid(c.domain, 2 * dx, tide::SortAlgorithm::radix, tide::CellLookup::automatic, Real(0.3) * dx);
+  if (grid.update(particles) != 0) state.SkipWithError("particles left the domain");
+  const tide::ConstVectorView<D> x = std::as_const(particles)[particles.position()];
+  tide::NeighborList<D> candidates;
+  candidates.build(grid, x, grid.own_neighbors(), x);
+  perturb(particles, 0);
+  tide::NeighborList<D> list;
+  list.refine(candidates, x, x);
+  for (auto _ : state) {
+    list.refine(candidates, x, x);
+    benchmark::ClobberMemory();
+  }
+  set_common_counters(state, particles.size(), count_pairs(grid, particles), grid, particles, true);
+  state.counters["candidates_B/particle"] = benchmark::Counter(double(candidates.bytes()) / double(particles.size()));
+}
+
 // ρ_i = Σ_j m W(|x_i − x_j|) over all neighbours j (i included): the shape of density
 // summation and of every other gather pass, after one update; walking the cells' ranges and
 // filtering (`listed` false) or walking a NeighborList built beforehand, untimed (true).
@@ -357,6 +382,11 @@ void register_dimension() {
           name.c_str(), [=](benchmark::State& state) { neighbor_list_build<D>(state, n, threads); });
       b->UseRealTime()->Unit(benchmark::kMillisecond);
       if (n >= 1'000'000) b->Iterations(10);
+      const std::string refine_name = "BM_NeighborRefine/" + dim + "/" + size_name(n) + suffix(threads);
+      auto* r = benchmark::RegisterBenchmark(
+          refine_name.c_str(), [=](benchmark::State& state) { neighbor_list_refine<D>(state, n, threads); });
+      r->UseRealTime()->Unit(benchmark::kMillisecond);
+      if (n >= 1'000'000) r->Iterations(10);
     }
   }
 }

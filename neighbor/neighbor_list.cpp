@@ -153,18 +153,28 @@ void NeighborList<D>::refine_block(const NeighborList& candidates, std::size_t b
       // vectorises, as in fill_block.
       const std::uint32_t* const entry = entries + first;
       const Index count = std::min<Index>(64, total - first);
-      std::uint64_t mask = 0;
+      std::array<Real, 64> r2;
       for (Index k = 0; k < count; ++k) {
         const std::uint32_t j = periodic ? entry[k] & index_mask : entry[k];
-        Real r2 = 0;
+        Real sum = 0;
         for (int d = 0; d < D; ++d) {
           const Real x_image = periodic ? x[d] - table_->shifts_[entry[k] >> index_bits][d] : x[d];
           const Real xij = x_image - source_x.component[d][j];
-          r2 += xij * xij;
+          sum += xij * xij;
         }
-        mask |= r2 < support_squared ? bit[k] : 0;
+        r2[k] = sum;
       }
-      append_set_bits(mask, out, [&](int k) { return entry[std::min<Index>(Index(k), count - 1)]; });
+      // About half the candidates pass, so every entry is written and only the kept ones are
+      // counted (a store per candidate), where fill_block's sparser pass decodes a bit mask:
+      // BM_NeighborRefine, 3D, 10^5 particles, 1 thread: 12.8 ms with the mask, 10.0 ms so.
+      out.reserve_more(count);
+      std::uint32_t* const at = out.data.get() + out.size;
+      std::size_t kept = 0;
+      for (Index k = 0; k < count; ++k) {
+        at[kept] = entry[k];
+        kept += r2[k] < support_squared ? 1 : 0;
+      }
+      out.size += kept;
     }
     span_[i] = {static_cast<std::uint32_t>(first_entry), static_cast<std::uint32_t>(out.size - first_entry)};
   }
