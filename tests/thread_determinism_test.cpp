@@ -159,7 +159,7 @@ TEST(ThreadDeterminism, IncompressibleMultiphaseIsBitwiseIdentical) {
     SCOPED_TRACE(static_cast<int>(scheme));
     const auto state = [scheme](int threads) {
       const ThreadLimit limit(threads);
-      scene::Scene s = test::rayleigh_taylor_scene(0.04);
+      scene::Scene s = test::rayleigh_taylor_scene(0.08);
       s.solver.scheme = scheme;
       return state_after_100_steps(*make_simulation<2>(s));
     };
