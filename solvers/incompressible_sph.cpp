@@ -236,6 +236,7 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
   };
   const auto weight_at = [&](std::size_t i) { return phase.empty() ? Real(1) : phase_weight[phase[i]]; };
   before_sweep_.resize(fluid_.size());
+  pressure_term_.resize(phases_ ? 0 : fluid_.size());
   Real weight = 1;
   SolveReport report;
   // The error of the velocities `velocity` now holds (the fluid's after a sweep, or the predicted
@@ -289,10 +290,10 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
           passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, solved, neighbors_, &wall_rule);
           if (phases_) {
             passes::pressure_velocity<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, neighbors_,
-                                               walls_, wall_fields_, dt);
+                                               walls_, wall_fields_, dt, pressure_term_);
           } else {
             passes::pressure_velocity<D>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, neighbors_, walls_,
-                                         wall_fields_, dt);
+                                         wall_fields_, dt, pressure_term_);
           }
           measure(kernel, fluid_fields_.velocity, false);
           if ((report.converged && report.iterations >= min_iterations) || report.iterations >= max_iterations) break;
@@ -449,7 +450,8 @@ void IncompressibleSph<D>::check_state() {
 
 template <int D>
 double IncompressibleSph<D>::bytes_per_particle() const {
-  const double scratch = fluid_.size() > 0 ? double(sizeof(Real) * before_sweep_.capacity()) / fluid_.size() : 0;
+  const std::size_t scratch_entries = before_sweep_.capacity() + pressure_term_.capacity();
+  const double scratch = fluid_.size() > 0 ? double(sizeof(Real) * scratch_entries) / fluid_.size() : 0;
   return setup::bytes_per_particle<D>(fluid_, walls_, neighbors_) + scratch;
 }
 

@@ -71,11 +71,14 @@ void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFie
 /// velocity that pressure p (and the walls' pressure extrapolated from it) gives after the step.
 /// With `NumberDensity`, the form of Hu & Adams 2006 (eq. 8) that the WCSPH momentum pass uses for
 /// several fluids: v_i = v*_i − (Δt/m_i) Σ_j (p_i V_i² + p_j V_j²) ∇W_ij with V = m/ρ (walls: m_b/ρ_b).
+/// `pressure_term` (one entry per fluid particle) is scratch: one fluid takes p_j/ρ_j² from it,
+/// computed once per particle rather than once per pair (a division per pair was ~7% of a 2D
+/// DFSPH run, docs/performance.md); the sums are bitwise those of the division per pair.
 template <int D, bool NumberDensity = false, class Kernel>
 void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                        const PressureSolveFields<D>& s, std::span<const Real> pressure,
                        const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
-                       Real dt) {
+                       Real dt, std::span<Real> pressure_term) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
   const auto density = std::as_const(fluid)[f.density];
@@ -85,6 +88,8 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
   const auto wall_density = walls[w.density];
   const auto wall_pressure = walls[w.pressure];
   auto v = fluid[f.velocity];
+  if constexpr (!NumberDensity)
+    for_each_particle(fluid.size(), [&](std::size_t i) { pressure_term[i] = pressure[i] / (density[i] * density[i]); });
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Real rho_i = density[i];
     const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
@@ -103,8 +108,17 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
       });
     };
     Vector<D> a = Vector<D>::Zero();
-    neighbors.for_each_fluid_run(i, x,
-                                 [&](const NeighborRun<D>& run) { pressure_push(run, a, mass, density, pressure); });
+    if constexpr (NumberDensity) {
+      neighbors.for_each_fluid_run(i, x,
+                                   [&](const NeighborRun<D>& run) { pressure_push(run, a, mass, density, pressure); });
+    } else {
+      neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
+        accumulate_along_offsets(run, a, [&](int k) {
+          const Index j = run.index[k];
+          return -(mass[j] * (p_over_rho2_i + pressure_term[j])) * kernel.derivative_over_r(std::sqrt(run.r2[k]));
+        });
+      });
+    }
     neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
       pressure_push(run, a, wall_mass, wall_density, wall_pressure);
     });

@@ -94,7 +94,8 @@ class IncompressibleSph final : public Simulation<D> {
   ParticleSet<D> walls_;
   FluidFields<D> fluid_fields_;
   PressureSolveFields<D> solve_fields_;
-  std::vector<Real> before_sweep_;  // p⁽ᵏ⁻¹⁾ of the Chebyshev recurrence; scratch of one solve, not sorted
+  std::vector<Real> before_sweep_;   // p⁽ᵏ⁻¹⁾ of the Chebyshev recurrence; scratch of one solve, not sorted
+  std::vector<Real> pressure_term_;  // p/ρ² of one fluid in a sweep (passes::pressure_velocity); scratch
   WallFields<D> wall_fields_;
   FluidWallNeighbors<D> neighbors_;
   double time_ = 0;
