@@ -58,6 +58,7 @@ void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorVie
                             const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x) {
   queries_ = &queries;
   table_ = &table;
+  gradient_factors_cached_ = false;
   const std::size_t cells = queries.occupied_cells();
   span_.resize(queries.particle_count());
   const std::size_t blocks = (cells + cells_per_block - 1) / cells_per_block;
@@ -120,6 +121,7 @@ void NeighborList<D>::refine(const NeighborList& candidates, const ConstVectorVi
                              const ConstVectorView<D>& source_x) {
   queries_ = candidates.queries_;
   table_ = candidates.table_;
+  gradient_factors_cached_ = false;
   span_.resize(candidates.span_.size());
   blocks_.resize(candidates.blocks_.size());
   parallel_blocks(blocks_.size(), 1, [&](std::size_t first_block, std::size_t last_block) {
@@ -137,13 +139,11 @@ template <int D>
 template <bool periodic>
 void NeighborList<D>::refine_block(const NeighborList& candidates, std::size_t block, const ConstVectorView<D>& query_x,
                                    const ConstVectorView<D>& source_x) {
-  const NeighborGrid<D>& queries = *queries_;
   const Real support_squared = table_->support_squared_;
-  const std::size_t first_cell = block * cells_per_block;
-  const std::size_t last_cell = std::min(queries.occupied_cells(), first_cell + cells_per_block);
   IndexArray& out = blocks_[block];
   out.size = 0;
-  for (Index i = queries.cell_start_[first_cell]; i < queries.cell_start_[last_cell]; ++i) {
+  const auto [first_particle, last_particle] = particles_of_block(block);
+  for (Index i = first_particle; i < last_particle; ++i) {
     const Vector<D> x = query_x[i];
     const std::uint32_t* const entries = candidates.entries(i);
     const Index total = candidates.span_[i].count;
@@ -193,6 +193,10 @@ void NeighborList<D>::add_memory(MemoryUsage& usage, const std::string& owner) c
   for (const IndexArray& block : blocks_) indices += block.capacity * sizeof(std::uint32_t);
   usage.add(owner + ".indices", indices);
   usage.add(owner + ".spans", held_bytes(span_));
+  if (gradient_factors_.empty()) return;
+  std::size_t factors = held_bytes(gradient_factors_);
+  for (const std::vector<Real>& block : gradient_factors_) factors += held_bytes(block);
+  usage.add(owner + ".gradient factors", factors);
 }
 
 template class NeighborList<2>;

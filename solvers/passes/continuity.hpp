@@ -73,28 +73,32 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
     } else {
       // Without a branch, so that accumulate() vectorises it; the pair i–i adds an exact zero.
       neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
-        accumulate(run, sum, [&](int k) {
-          const Index j = run.index[k];
-          const Real gradient_factor = kernel.derivative_over_r(std::sqrt(run.r2[k]));
-          Real v_dot_grad_w = 0;
-          for (int d = 0; d < D; ++d) v_dot_grad_w += (v_i[d] - v.component[d][j]) * (gradient_factor * run.x_ij[d][k]);
-          return weight(mass, j) * v_dot_grad_w;
+        with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+          accumulate(run, sum, [&](int k) {
+            const Index j = run.index[k];
+            const Real factor = gradient_factor(k);
+            Real v_dot_grad_w = 0;
+            for (int d = 0; d < D; ++d) v_dot_grad_w += (v_i[d] - v.component[d][j]) * (factor * run.x_ij[d][k]);
+            return weight(mass, j) * v_dot_grad_w;
+          });
         });
       });
     }
     // Moving walls or not (a std::bool_constant) is chosen outside the pair loop, which then
     // has no branch.
     const auto add_wall_run = [&](auto moving, const NeighborRun<D>& run) {
-      accumulate(run, sum, [&](int k) {
-        const Index b = run.index[k];
-        const Real gradient_factor = kernel.derivative_over_r(std::sqrt(run.r2[k]));
-        Real v_dot_grad_w = 0;
-        for (int d = 0; d < D; ++d) {
-          Real v_ib = v_i[d];
-          if constexpr (decltype(moving)::value) v_ib -= surface_velocity.component[d][b];
-          v_dot_grad_w += v_ib * (gradient_factor * run.x_ij[d][k]);
-        }
-        return weight(wall_mass, b) * v_dot_grad_w;
+      with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+        accumulate(run, sum, [&](int k) {
+          const Index b = run.index[k];
+          const Real factor = gradient_factor(k);
+          Real v_dot_grad_w = 0;
+          for (int d = 0; d < D; ++d) {
+            Real v_ib = v_i[d];
+            if constexpr (decltype(moving)::value) v_ib -= surface_velocity.component[d][b];
+            v_dot_grad_w += v_ib * (factor * run.x_ij[d][k]);
+          }
+          return weight(wall_mass, b) * v_dot_grad_w;
+        });
       });
     };
     neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {

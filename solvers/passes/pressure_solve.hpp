@@ -97,14 +97,16 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
     // Without a branch, so that accumulate_along_offsets() vectorises it; the pair i–i adds an exact zero.
     const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a, std::span<const Real> masses,
                                    std::span<const Real> densities, std::span<const Real> pressures) {
-      accumulate_along_offsets(run, a, [&](int k) {
-        const Index j = run.index[k];
-        const Real rho_j = densities[j];
-        const Real m_j = masses[j];
-        const Real term = NumberDensity
-                              ? mass[i] * p_over_rho2_i + m_j * m_j * inverse_mass_i * pressures[j] / (rho_j * rho_j)
-                              : m_j * (p_over_rho2_i + pressures[j] / (rho_j * rho_j));
-        return -term * kernel.derivative_over_r(std::sqrt(run.r2[k]));
+      with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+        accumulate_along_offsets(run, a, [&](int k) {
+          const Index j = run.index[k];
+          const Real rho_j = densities[j];
+          const Real m_j = masses[j];
+          const Real term = NumberDensity
+                                ? mass[i] * p_over_rho2_i + m_j * m_j * inverse_mass_i * pressures[j] / (rho_j * rho_j)
+                                : m_j * (p_over_rho2_i + pressures[j] / (rho_j * rho_j));
+          return -term * gradient_factor(k);
+        });
       });
     };
     Vector<D> a = Vector<D>::Zero();
@@ -113,9 +115,11 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
                                    [&](const NeighborRun<D>& run) { pressure_push(run, a, mass, density, pressure); });
     } else {
       neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
-        accumulate_along_offsets(run, a, [&](int k) {
-          const Index j = run.index[k];
-          return -(mass[j] * (p_over_rho2_i + pressure_term[j])) * kernel.derivative_over_r(std::sqrt(run.r2[k]));
+        with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+          accumulate_along_offsets(run, a, [&](int k) {
+            const Index j = run.index[k];
+            return -(mass[j] * (p_over_rho2_i + pressure_term[j])) * gradient_factor(k);
+          });
         });
       });
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "tide/core/memory_usage.hpp"
+#include "tide/core/parallel.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/types.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
@@ -46,6 +48,32 @@ class NeighborList {
   /// its grids and table stay unchanged until the next refine.
   void refine(const NeighborList& candidates, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x);
 
+  /// Keeps derivative_over_r(r) of every listed pair at the positions `query_x` and `source_x`
+  /// (those of the last build or refine), computed from the r² of for_each_run, for the runs to
+  /// hand out as NeighborRun::gradient_factor until the next build or refine. A pressure solve
+  /// walks the same pairs in every sweep of a step; this computes their kernel term once.
+  template <class DerivativeOverR>
+  void cache_gradient_factors(const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x,
+                              const DerivativeOverR& derivative_over_r) {
+    gradient_factors_cached_ = false;
+    gradient_factors_.resize(blocks_.size());
+    parallel_blocks(blocks_.size(), 1, [&](std::size_t first_block, std::size_t last_block) {
+      for (std::size_t block = first_block; block < last_block; ++block) {
+        std::vector<Real>& factors = gradient_factors_[block];
+        factors.resize(blocks_[block].size);
+        const auto [first_particle, last_particle] = particles_of_block(block);
+        for (Index i = first_particle; i < last_particle; ++i) {
+          Real* at = factors.data() + span_[i].first;
+          for_each_run(i, query_x, source_x, [&](const NeighborRun<D>& run) {
+            for (int k = 0; k < run.count; ++k) at[k] = derivative_over_r(std::sqrt(run.r2[k]));
+            at += run.count;
+          });
+        }
+      }
+    });
+    gradient_factors_cached_ = true;
+  }
+
   /// Calls f(j, x_ij, r2) for every source neighbour j of query particle i, in the order of
   /// CrossNeighbors::for_each_in_cell, with the same x_ij = x_i − x_j (minimum image) and r2.
   /// The positions must be those of the last build.
@@ -62,16 +90,19 @@ class NeighborList {
   }
 
   /// Calls f(run) for the neighbours of query particle i in runs of up to NeighborRun::capacity,
-  /// in the order of for_each.
+  /// in the order of for_each, with the gradient factors when they are cached.
   template <class F>
   void for_each_run(std::size_t i, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x, F&& f) const {
     const Vector<D> x = query_x[i];
     const std::uint32_t* const first_entry = entries(i);
     const int total = static_cast<int>(span_[i].count);
+    const Real* const first_factor =
+        gradient_factors_cached_ ? gradient_factors_[block_of(i)].data() + span_[i].first : nullptr;
     NeighborRun<D> run;
     for (int first = 0; first < total; first += NeighborRun<D>::capacity) {
       run.count = std::min(NeighborRun<D>::capacity, total - first);
       const std::uint32_t* const entry = first_entry + first;
+      run.gradient_factor = first_factor ? first_factor + first : nullptr;
       if (table_->periodic()) {
         for (int k = 0; k < run.count; ++k) {
           const Index j = entry[k] & index_mask;
@@ -124,8 +155,13 @@ class NeighborList {
     std::uint32_t count = 0;
   };
 
-  const std::uint32_t* entries(std::size_t i) const {
-    return blocks_[queries_->particle_cell_[i] / cells_per_block].data.get() + span_[i].first;
+  std::size_t block_of(std::size_t i) const { return queries_->particle_cell_[i] / cells_per_block; }
+  const std::uint32_t* entries(std::size_t i) const { return blocks_[block_of(i)].data.get() + span_[i].first; }
+  // The query particles of a block's cells, [first, last).
+  std::pair<Index, Index> particles_of_block(std::size_t block) const {
+    const std::size_t first_cell = block * cells_per_block;
+    const std::size_t last_cell = std::min(queries_->occupied_cells(), first_cell + cells_per_block);
+    return {queries_->cell_start_[first_cell], queries_->cell_start_[last_cell]};
   }
 
   template <class F>
@@ -147,6 +183,10 @@ class NeighborList {
   const CrossNeighbors<D>* table_ = nullptr;
   std::vector<IndexArray> blocks_;
   std::vector<Span> span_;  // query particle i
+  // Per block, in the layout of its indices: what cache_gradient_factors computed, valid while
+  // gradient_factors_cached_ (a build or refine clears it).
+  std::vector<std::vector<Real>> gradient_factors_;
+  bool gradient_factors_cached_ = false;
 };
 
 extern template class NeighborList<2>;

@@ -71,6 +71,17 @@ class FluidWallNeighbors {
     return removed;
   }
 
+  /// Caches `kernel`'s (1/r) dW/dr of every fluid–fluid and fluid → wall pair at the positions
+  /// of the last update_fluid (NeighborList::cache_gradient_factors), for the runs walked until
+  /// the next update, which drops them; passes that take those runs must use the same kernel.
+  template <class Kernel>
+  void cache_gradient_factors(const Kernel& kernel, const ConstVectorView<D>& fluid_x,
+                              const ConstVectorView<D>& wall_x) {
+    const auto derivative_over_r = [&](Real r) { return kernel.derivative_over_r(r); };
+    fluid_list_.cache_gradient_factors(fluid_x, fluid_x, derivative_over_r);
+    fluid_to_walls_list_.cache_gradient_factors(fluid_x, wall_x, derivative_over_r);
+  }
+
   /// Fluid updates that re-sorted the fluid and rebuilt the lists, the first included.
   std::size_t builds() const { return builds_; }
 
