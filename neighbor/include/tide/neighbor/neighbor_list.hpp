@@ -60,6 +60,13 @@ class NeighborList {
     parallel_blocks(blocks_.size(), 1, [&](std::size_t first_block, std::size_t last_block) {
       for (std::size_t block = first_block; block < last_block; ++block) {
         std::vector<Real>& factors = gradient_factors_[block];
+        // At the capacity of the block's indices, which grow by a quarter (IndexArray), rather
+        // than by the doubling of a vector's own growth.
+        if (factors.capacity() < blocks_[block].capacity) {
+          factors.clear();
+          factors.shrink_to_fit();
+          factors.reserve(blocks_[block].capacity);
+        }
         factors.resize(blocks_[block].size);
         const auto [first_particle, last_particle] = particles_of_block(block);
         for (Index i = first_particle; i < last_particle; ++i) {
