@@ -215,31 +215,33 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
                                const ConstVectorView<D>& velocities) {
         constexpr bool viscous_run = decltype(viscous)::value;
         std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
-        for (int k = 0; k < run.count; ++k) {
-          const Index j = run.index[k];
-          const Real r = std::sqrt(run.r2[k]);
-          const Real rho_j = densities[j];
-          const Real gradient_factor = kernel.derivative_over_r(r);
-          std::array<Real, D> grad_w;
-          for (int d = 0; d < D; ++d) grad_w[d] = gradient_factor * run.x_ij[d][k];
-          if constexpr (WithPressure) {
-            const Real scale = masses[j] * pressure_term(pressures[j] / (rho_j * rho_j), r);
-            for (int d = 0; d < D; ++d) pressure_terms[d][k] = scale * grad_w[d];
-          }
-          if constexpr (viscous_run) {
-            std::array<Real, D> v_ij;
-            Real v_dot_x = 0, x_dot_grad_w = 0;
-            for (int d = 0; d < D; ++d) {
-              v_ij[d] = v_i[d] - velocities.component[d][j];
-              v_dot_x += v_ij[d] * run.x_ij[d][k];
-              x_dot_grad_w += run.x_ij[d][k] * grad_w[d];
+        with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+          for (int k = 0; k < run.count; ++k) {
+            const Index j = run.index[k];
+            const Real r = std::sqrt(run.r2[k]);
+            const Real rho_j = densities[j];
+            const Real factor = gradient_factor(k);
+            std::array<Real, D> grad_w;
+            for (int d = 0; d < D; ++d) grad_w[d] = factor * run.x_ij[d][k];
+            if constexpr (WithPressure) {
+              const Real scale = masses[j] * pressure_term(pressures[j] / (rho_j * rho_j), r);
+              for (int d = 0; d < D; ++d) pressure_terms[d][k] = scale * grad_w[d];
             }
-            const Real coefficient =
-                detail::viscous_coefficient<Model>(settings, masses[j], rho_i, rho_j, v_dot_x, x_dot_grad_w, run.r2[k]);
-            const std::array<Real, D>& direction = Model == scene::ViscosityModel::artificial ? grad_w : v_ij;
-            for (int d = 0; d < D; ++d) viscous_terms[d][k] = coefficient * direction[d];
+            if constexpr (viscous_run) {
+              std::array<Real, D> v_ij;
+              Real v_dot_x = 0, x_dot_grad_w = 0;
+              for (int d = 0; d < D; ++d) {
+                v_ij[d] = v_i[d] - velocities.component[d][j];
+                v_dot_x += v_ij[d] * run.x_ij[d][k];
+                x_dot_grad_w += run.x_ij[d][k] * grad_w[d];
+              }
+              const Real coefficient = detail::viscous_coefficient<Model>(settings, masses[j], rho_i, rho_j, v_dot_x,
+                                                                          x_dot_grad_w, run.r2[k]);
+              const std::array<Real, D>& direction = Model == scene::ViscosityModel::artificial ? grad_w : v_ij;
+              for (int d = 0; d < D; ++d) viscous_terms[d][k] = coefficient * direction[d];
+            }
           }
-        }
+        });
         for (int k = 0; k < run.count; ++k) {
           if constexpr (WithPressure) {
             for (int d = 0; d < D; ++d) a[d] -= pressure_terms[d][k];

@@ -13,6 +13,7 @@
 // over ρ0: Akinci's ψ_b = ρ0 / Σ_b' W_bb' is that mass for walls sampled, as here, on the fluid's
 // lattice with layers across the whole kernel support.
 
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -44,20 +45,41 @@ void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFie
     Vector<D> fluid_sum = Vector<D>::Zero();
     Vector<D> wall_sum = Vector<D>::Zero();
     Real squares = 0;
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      if (j == i) return;
-      const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
-      if constexpr (NumberDensity) {
-        fluid_sum += grad_w;
-        squares += squared_norm<D>(grad_w) / mass[j];
-      } else {
-        fluid_sum += mass[j] * grad_w;
-        squares += mass[j] * squared_norm<D>(grad_w);
-      }
+    // The terms of a run in a loop without branches, then added in the list's order; the pair
+    // i–i gives exact zeros.
+    neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
+      with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+        std::array<std::array<Real, NeighborRun<D>::capacity>, D> sum_terms;
+        std::array<Real, NeighborRun<D>::capacity> square_terms;
+        for (int k = 0; k < run.count; ++k) {
+          const Real factor = gradient_factor(k);
+          const Real m_j = mass[run.index[k]];
+          Real grad_w2 = 0;
+          for (int d = 0; d < D; ++d) {
+            const Real grad_w = factor * run.x_ij[d][k];
+            grad_w2 += grad_w * grad_w;
+            sum_terms[d][k] = NumberDensity ? grad_w : m_j * grad_w;
+          }
+          square_terms[k] = NumberDensity ? grad_w2 / m_j : m_j * grad_w2;
+        }
+        for (int k = 0; k < run.count; ++k) {
+          for (int d = 0; d < D; ++d) fluid_sum[d] += sum_terms[d][k];
+          squares += square_terms[k];
+        }
+      });
     });
-    neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
-      const Vector<D> grad_w = kernel.gradient(x_ib, std::sqrt(r2));
-      wall_sum += NumberDensity ? grad_w : Vector<D>(wall_mass[b] * grad_w);
+    neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+      with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+        std::array<std::array<Real, NeighborRun<D>::capacity>, D> sum_terms;
+        for (int k = 0; k < run.count; ++k) {
+          const Real factor = gradient_factor(k);
+          const Real m_b = NumberDensity ? Real(1) : wall_mass[run.index[k]];
+          for (int d = 0; d < D; ++d)
+            sum_terms[d][k] = NumberDensity ? factor * run.x_ij[d][k] : m_b * (factor * run.x_ij[d][k]);
+        }
+        for (int k = 0; k < run.count; ++k)
+          for (int d = 0; d < D; ++d) wall_sum[d] += sum_terms[d][k];
+      });
     });
     const Real m_i = mass[i];
     const Real gradient_norm2 = (fluid_sum + wall_sum).squaredNorm();
