@@ -58,7 +58,7 @@ void NeighborList<D>::build(const NeighborGrid<D>& queries, const ConstVectorVie
                             const CrossNeighbors<D>& table, const ConstVectorView<D>& source_x) {
   queries_ = &queries;
   table_ = &table;
-  gradient_factors_cached_ = false;
+  gradients_cached_ = false;
   const std::size_t cells = queries.occupied_cells();
   span_.resize(queries.particle_count());
   const std::size_t blocks = (cells + cells_per_block - 1) / cells_per_block;
@@ -121,7 +121,7 @@ void NeighborList<D>::refine(const NeighborList& candidates, const ConstVectorVi
                              const ConstVectorView<D>& source_x) {
   queries_ = candidates.queries_;
   table_ = candidates.table_;
-  gradient_factors_cached_ = false;
+  gradients_cached_ = false;
   span_.resize(candidates.span_.size());
   blocks_.resize(candidates.blocks_.size());
   parallel_blocks(blocks_.size(), 1, [&](std::size_t first_block, std::size_t last_block) {
@@ -193,10 +193,10 @@ void NeighborList<D>::add_memory(MemoryUsage& usage, const std::string& owner) c
   for (const IndexArray& block : blocks_) indices += block.capacity * sizeof(std::uint32_t);
   usage.add(owner + ".indices", indices);
   usage.add(owner + ".spans", held_bytes(span_));
-  if (gradient_factors_.empty()) return;
-  std::size_t factors = held_bytes(gradient_factors_);
-  for (const std::vector<Real>& block : gradient_factors_) factors += held_bytes(block);
-  usage.add(owner + ".gradient factors", factors);
+  if (gradients_.empty()) return;
+  std::size_t gradients = held_bytes(gradients_);
+  for (const std::vector<Real>& block : gradients_) gradients += held_bytes(block);
+  usage.add(owner + ".gradients", gradients);
 }
 
 template class NeighborList<2>;

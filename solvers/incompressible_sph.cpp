@@ -161,8 +161,8 @@ template <int D>
 void IncompressibleSph<D>::compute_density_and_factor() {
   std::visit(
       [&](const auto& kernel) {
-        neighbors_.cache_gradient_factors(kernel, std::as_const(fluid_)[fluid_fields_.position],
-                                          std::as_const(walls_)[wall_fields_.position]);
+        neighbors_.cache_gradients(kernel, std::as_const(fluid_)[fluid_fields_.position],
+                                   std::as_const(walls_)[wall_fields_.position]);
         const auto nothing_more = [](std::size_t, Real) {};
         if (phases_) {
           passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,

@@ -2,6 +2,7 @@
 
 // Density rate from the continuity equation, with δ-SPH density diffusion.
 
+#include <array>
 #include <cmath>
 #include <span>
 #include <type_traits>
@@ -72,13 +73,13 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
       });
     } else {
       // Without a branch, so that accumulate() vectorises it; the pair i–i adds an exact zero.
-      neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
-        with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+      neighbors.template for_each_fluid_run<false>(i, x, [&](const NeighborRun<D>& run) {
+        with_gradients(kernel, run, [&](const auto& gradient) {
           accumulate(run, sum, [&](int k) {
             const Index j = run.index[k];
-            const Real factor = gradient_factor(k);
+            const std::array<Real, D> grad_w = gradient(k);
             Real v_dot_grad_w = 0;
-            for (int d = 0; d < D; ++d) v_dot_grad_w += (v_i[d] - v.component[d][j]) * (factor * run.x_ij[d][k]);
+            for (int d = 0; d < D; ++d) v_dot_grad_w += (v_i[d] - v.component[d][j]) * grad_w[d];
             return weight(mass, j) * v_dot_grad_w;
           });
         });
@@ -87,21 +88,21 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
     // Moving walls or not (a std::bool_constant) is chosen outside the pair loop, which then
     // has no branch.
     const auto add_wall_run = [&](auto moving, const NeighborRun<D>& run) {
-      with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+      with_gradients(kernel, run, [&](const auto& gradient) {
         accumulate(run, sum, [&](int k) {
           const Index b = run.index[k];
-          const Real factor = gradient_factor(k);
+          const std::array<Real, D> grad_w = gradient(k);
           Real v_dot_grad_w = 0;
           for (int d = 0; d < D; ++d) {
             Real v_ib = v_i[d];
             if constexpr (decltype(moving)::value) v_ib -= surface_velocity.component[d][b];
-            v_dot_grad_w += v_ib * (factor * run.x_ij[d][k]);
+            v_dot_grad_w += v_ib * grad_w[d];
           }
           return weight(wall_mass, b) * v_dot_grad_w;
         });
       });
     };
-    neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+    neighbors.template for_each_wall_run<false>(i, x, wall_x, [&](const NeighborRun<D>& run) {
       if (w.surface_velocity) {
         add_wall_run(std::true_type{}, run);
       } else {

@@ -215,14 +215,12 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
                                const ConstVectorView<D>& velocities) {
         constexpr bool viscous_run = decltype(viscous)::value;
         std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
-        with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+        with_gradients(kernel, run, [&](const auto& gradient) {
           for (int k = 0; k < run.count; ++k) {
             const Index j = run.index[k];
             const Real r = std::sqrt(run.r2[k]);
             const Real rho_j = densities[j];
-            const Real factor = gradient_factor(k);
-            std::array<Real, D> grad_w;
-            for (int d = 0; d < D; ++d) grad_w[d] = factor * run.x_ij[d][k];
+            const std::array<Real, D> grad_w = gradient(k);
             if constexpr (WithPressure) {
               const Real scale = masses[j] * pressure_term(pressures[j] / (rho_j * rho_j), r);
               for (int d = 0; d < D; ++d) pressure_terms[d][k] = scale * grad_w[d];

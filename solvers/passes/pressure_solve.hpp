@@ -47,18 +47,17 @@ void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFie
     Real squares = 0;
     // The terms of a run in a loop without branches, then added in the list's order; the pair
     // i–i gives exact zeros.
-    neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
-      with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+    neighbors.template for_each_fluid_run<false>(i, x, [&](const NeighborRun<D>& run) {
+      with_gradients(kernel, run, [&](const auto& gradient) {
         std::array<std::array<Real, NeighborRun<D>::capacity>, D> sum_terms;
         std::array<Real, NeighborRun<D>::capacity> square_terms;
         for (int k = 0; k < run.count; ++k) {
-          const Real factor = gradient_factor(k);
+          const std::array<Real, D> grad_w = gradient(k);
           const Real m_j = mass[run.index[k]];
           Real grad_w2 = 0;
           for (int d = 0; d < D; ++d) {
-            const Real grad_w = factor * run.x_ij[d][k];
-            grad_w2 += grad_w * grad_w;
-            sum_terms[d][k] = NumberDensity ? grad_w : m_j * grad_w;
+            grad_w2 += grad_w[d] * grad_w[d];
+            sum_terms[d][k] = NumberDensity ? grad_w[d] : m_j * grad_w[d];
           }
           square_terms[k] = NumberDensity ? grad_w2 / m_j : m_j * grad_w2;
         }
@@ -68,14 +67,13 @@ void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFie
         }
       });
     });
-    neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
-      with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
+    neighbors.template for_each_wall_run<false>(i, x, wall_x, [&](const NeighborRun<D>& run) {
+      with_gradients(kernel, run, [&](const auto& gradient) {
         std::array<std::array<Real, NeighborRun<D>::capacity>, D> sum_terms;
         for (int k = 0; k < run.count; ++k) {
-          const Real factor = gradient_factor(k);
+          const std::array<Real, D> grad_w = gradient(k);
           const Real m_b = NumberDensity ? Real(1) : wall_mass[run.index[k]];
-          for (int d = 0; d < D; ++d)
-            sum_terms[d][k] = NumberDensity ? factor * run.x_ij[d][k] : m_b * (factor * run.x_ij[d][k]);
+          for (int d = 0; d < D; ++d) sum_terms[d][k] = NumberDensity ? grad_w[d] : m_b * grad_w[d];
         }
         for (int k = 0; k < run.count; ++k)
           for (int d = 0; d < D; ++d) wall_sum[d] += sum_terms[d][k];
@@ -116,36 +114,36 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
     const Real rho_i = density[i];
     const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
     const Real inverse_mass_i = 1 / mass[i];
-    // Without a branch, so that accumulate_along_offsets() vectorises it; the pair i–i adds an exact zero.
+    // Without a branch, so that accumulate_along_gradients() vectorises it; the pair i–i adds an exact zero.
     const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a, std::span<const Real> masses,
                                    std::span<const Real> densities, std::span<const Real> pressures) {
-      with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
-        accumulate_along_offsets(run, a, [&](int k) {
+      with_gradients(kernel, run, [&](const auto& gradient) {
+        accumulate_along_gradients(run, a, gradient, [&](int k) {
           const Index j = run.index[k];
           const Real rho_j = densities[j];
           const Real m_j = masses[j];
           const Real term = NumberDensity
                                 ? mass[i] * p_over_rho2_i + m_j * m_j * inverse_mass_i * pressures[j] / (rho_j * rho_j)
                                 : m_j * (p_over_rho2_i + pressures[j] / (rho_j * rho_j));
-          return -term * gradient_factor(k);
+          return -term;
         });
       });
     };
     Vector<D> a = Vector<D>::Zero();
     if constexpr (NumberDensity) {
-      neighbors.for_each_fluid_run(i, x,
-                                   [&](const NeighborRun<D>& run) { pressure_push(run, a, mass, density, pressure); });
+      neighbors.template for_each_fluid_run<false>(
+          i, x, [&](const NeighborRun<D>& run) { pressure_push(run, a, mass, density, pressure); });
     } else {
-      neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
-        with_gradient_factors(kernel, run, [&](const auto& gradient_factor) {
-          accumulate_along_offsets(run, a, [&](int k) {
+      neighbors.template for_each_fluid_run<false>(i, x, [&](const NeighborRun<D>& run) {
+        with_gradients(kernel, run, [&](const auto& gradient) {
+          accumulate_along_gradients(run, a, gradient, [&](int k) {
             const Index j = run.index[k];
-            return -(mass[j] * (p_over_rho2_i + pressure_term[j])) * gradient_factor(k);
+            return -(mass[j] * (p_over_rho2_i + pressure_term[j]));
           });
         });
       });
     }
-    neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
+    neighbors.template for_each_wall_run<false>(i, x, wall_x, [&](const NeighborRun<D>& run) {
       pressure_push(run, a, wall_mass, wall_density, wall_pressure);
     });
     v.set(i, predicted[i] + dt * a);

@@ -48,37 +48,43 @@ class NeighborList {
   /// its grids and table stay unchanged until the next refine.
   void refine(const NeighborList& candidates, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x);
 
-  /// Keeps derivative_over_r(r) of every listed pair at the positions `query_x` and `source_x`
-  /// (those of the last build or refine), computed from the r² of for_each_run, for the runs to
-  /// hand out as NeighborRun::gradient_factor until the next build or refine. A pressure solve
-  /// walks the same pairs in every sweep of a step; this computes their kernel term once.
+  /// Keeps ∇W_ij = derivative_over_r(r) x_ij of every listed pair at the positions `query_x` and
+  /// `source_x` (those of the last build or refine), computed from the x_ij and r² of
+  /// for_each_run, for the runs to hand out as NeighborRun::gradient until the next build or
+  /// refine. A pressure solve walks the same pairs in every sweep of a step; this computes their
+  /// kernel term once, and a walk that needs only the gradients no longer gathers positions.
   template <class DerivativeOverR>
-  void cache_gradient_factors(const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x,
-                              const DerivativeOverR& derivative_over_r) {
-    gradient_factors_cached_ = false;
-    gradient_factors_.resize(blocks_.size());
+  void cache_gradients(const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x,
+                       const DerivativeOverR& derivative_over_r) {
+    gradients_cached_ = false;
+    gradients_.resize(blocks_.size());
     parallel_blocks(blocks_.size(), 1, [&](std::size_t first_block, std::size_t last_block) {
       for (std::size_t block = first_block; block < last_block; ++block) {
-        std::vector<Real>& factors = gradient_factors_[block];
-        // At the capacity of the block's indices, which grow by a quarter (IndexArray), rather
-        // than by the doubling of a vector's own growth.
-        if (factors.capacity() < blocks_[block].capacity) {
-          factors.clear();
-          factors.shrink_to_fit();
-          factors.reserve(blocks_[block].capacity);
+        std::vector<Real>& gradients = gradients_[block];
+        // D per index at the capacity of the block's indices, which grow by a quarter
+        // (IndexArray), rather than by the doubling of a vector's own growth.
+        if (gradients.capacity() < D * blocks_[block].capacity) {
+          gradients.clear();
+          gradients.shrink_to_fit();
+          gradients.reserve(D * blocks_[block].capacity);
         }
-        factors.resize(blocks_[block].size);
+        gradients.resize(D * blocks_[block].size);
         const auto [first_particle, last_particle] = particles_of_block(block);
         for (Index i = first_particle; i < last_particle; ++i) {
-          Real* at = factors.data() + span_[i].first;
+          Real* const particle = gradients.data() + D * span_[i].first;
+          const int total = static_cast<int>(span_[i].count);
+          int first = 0;
           for_each_run(i, query_x, source_x, [&](const NeighborRun<D>& run) {
-            for (int k = 0; k < run.count; ++k) at[k] = derivative_over_r(std::sqrt(run.r2[k]));
-            at += run.count;
+            for (int k = 0; k < run.count; ++k) {
+              const Real factor = derivative_over_r(std::sqrt(run.r2[k]));
+              for (int d = 0; d < D; ++d) particle[d * total + first + k] = factor * run.x_ij[d][k];
+            }
+            first += run.count;
           });
         }
       }
     });
-    gradient_factors_cached_ = true;
+    gradients_cached_ = true;
   }
 
   /// Calls f(j, x_ij, r2) for every source neighbour j of query particle i, in the order of
@@ -97,37 +103,43 @@ class NeighborList {
   }
 
   /// Calls f(run) for the neighbours of query particle i in runs of up to NeighborRun::capacity,
-  /// in the order of for_each, with the gradient factors when they are cached.
-  template <class F>
+  /// in the order of for_each, with the gradients when they are cached. With `Offsets` false and
+  /// the gradients cached, the runs hold indices and gradients only (no x_ij, no r²).
+  template <bool Offsets = true, class F>
   void for_each_run(std::size_t i, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x, F&& f) const {
     const Vector<D> x = query_x[i];
     const std::uint32_t* const first_entry = entries(i);
     const int total = static_cast<int>(span_[i].count);
-    const Real* const first_factor =
-        gradient_factors_cached_ ? gradient_factors_[block_of(i)].data() + span_[i].first : nullptr;
+    const Real* const particle_gradients =
+        gradients_cached_ ? gradients_[block_of(i)].data() + D * span_[i].first : nullptr;
+    const bool offsets = Offsets || !particle_gradients;
     NeighborRun<D> run;
     for (int first = 0; first < total; first += NeighborRun<D>::capacity) {
       run.count = std::min(NeighborRun<D>::capacity, total - first);
       const std::uint32_t* const entry = first_entry + first;
-      run.gradient_factor = first_factor ? first_factor + first : nullptr;
+      for (int d = 0; d < D; ++d)
+        run.gradient[d] = particle_gradients ? particle_gradients + d * total + first : nullptr;
       if (table_->periodic()) {
-        for (int k = 0; k < run.count; ++k) {
-          const Index j = entry[k] & index_mask;
-          const Vector<D> x_image = x - table_->shifts_[entry[k] >> index_bits];
-          run.index[k] = j;
-          for (int d = 0; d < D; ++d) run.x_ij[d][k] = x_image[d] - source_x.component[d][j];
+        for (int k = 0; k < run.count; ++k) run.index[k] = entry[k] & index_mask;
+        if (offsets) {
+          for (int k = 0; k < run.count; ++k) {
+            const Vector<D> x_image = x - table_->shifts_[entry[k] >> index_bits];
+            for (int d = 0; d < D; ++d) run.x_ij[d][k] = x_image[d] - source_x.component[d][run.index[k]];
+          }
         }
       } else {
-        for (int k = 0; k < run.count; ++k) {
-          const Index j = entry[k];
-          run.index[k] = j;
-          for (int d = 0; d < D; ++d) run.x_ij[d][k] = x[d] - source_x.component[d][j];
+        for (int k = 0; k < run.count; ++k) run.index[k] = entry[k];
+        if (offsets) {
+          for (int k = 0; k < run.count; ++k)
+            for (int d = 0; d < D; ++d) run.x_ij[d][k] = x[d] - source_x.component[d][entry[k]];
         }
       }
-      for (int k = 0; k < run.count; ++k) {
-        Real r2 = 0;
-        for (int d = 0; d < D; ++d) r2 += run.x_ij[d][k] * run.x_ij[d][k];
-        run.r2[k] = r2;
+      if (offsets) {
+        for (int k = 0; k < run.count; ++k) {
+          Real r2 = 0;
+          for (int d = 0; d < D; ++d) r2 += run.x_ij[d][k] * run.x_ij[d][k];
+          run.r2[k] = r2;
+        }
       }
       f(std::as_const(run));
     }
@@ -190,10 +202,11 @@ class NeighborList {
   const CrossNeighbors<D>* table_ = nullptr;
   std::vector<IndexArray> blocks_;
   std::vector<Span> span_;  // query particle i
-  // Per block, in the layout of its indices: what cache_gradient_factors computed, valid while
-  // gradient_factors_cached_ (a build or refine clears it).
-  std::vector<std::vector<Real>> gradient_factors_;
-  bool gradient_factors_cached_ = false;
+  // Per block, D per index: what cache_gradients computed, valid while gradients_cached_ (a
+  // build or refine clears it). Particle i's are at D × its first entry, by component:
+  // component d of its entry k at D first + d count + k.
+  std::vector<std::vector<Real>> gradients_;
+  bool gradients_cached_ = false;
 };
 
 extern template class NeighborList<2>;

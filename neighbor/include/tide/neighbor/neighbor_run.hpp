@@ -9,7 +9,9 @@ namespace tide {
 
 /// Up to `capacity` neighbours of one query particle: their indices, x_ij = x_i − x_j (minimum
 /// image) by component and r² = |x_ij|², in the neighbour list's order; and, where the list has
-/// them cached (NeighborList::cache_gradient_factors), the kernel's (1/r) dW/dr of each pair.
+/// them cached (NeighborList::cache_gradients), each pair's kernel gradient ∇W_ij by component.
+/// A walk asked for gradients only (NeighborList::for_each_run<false>) leaves x_ij and r² unset
+/// when it has the gradients.
 template <int D>
 struct NeighborRun {
   static constexpr int capacity = 64;
@@ -17,19 +19,29 @@ struct NeighborRun {
   std::array<Index, capacity> index;
   std::array<std::array<Real, capacity>, D> x_ij;
   std::array<Real, capacity> r2;
-  const Real* gradient_factor = nullptr;  // count entries, or null
+  std::array<const Real*, D> gradient{};  // count entries each, or null
 };
 
-/// Calls body(factor) with factor(k) the kernel's (1/r) dW/dr of pair k of `run`: the cached
-/// value where the run has one (the same number: it was computed from the same r²), else
-/// kernel.derivative_over_r(√r²). body is instantiated for each case, so its pair loop keeps
-/// no branch. The cache must have been filled with `kernel`.
+/// Calls body(gradient) with gradient(k) the kernel gradient ∇W_ij of pair k of `run` (a
+/// std::array of D components): the cached one where the run has it (the same numbers:
+/// derivative_over_r(√r²) x_ij from the same x_ij), else computed so from the run's x_ij and r².
+/// body is instantiated for each case, so its pair loop keeps no branch. The cache must have
+/// been filled with `kernel`.
 template <int D, class Kernel, class Body>
-void with_gradient_factors(const Kernel& kernel, const NeighborRun<D>& run, Body&& body) {
-  if (run.gradient_factor) {
-    body([&](int k) { return run.gradient_factor[k]; });
+void with_gradients(const Kernel& kernel, const NeighborRun<D>& run, Body&& body) {
+  if (run.gradient[0]) {
+    body([&](int k) {
+      std::array<Real, D> grad_w;
+      for (int d = 0; d < D; ++d) grad_w[d] = run.gradient[d][k];
+      return grad_w;
+    });
   } else {
-    body([&](int k) { return kernel.derivative_over_r(std::sqrt(run.r2[k])); });
+    body([&](int k) {
+      const Real factor = kernel.derivative_over_r(std::sqrt(run.r2[k]));
+      std::array<Real, D> grad_w;
+      for (int d = 0; d < D; ++d) grad_w[d] = factor * run.x_ij[d][k];
+      return grad_w;
+    });
   }
 }
 
@@ -44,14 +56,16 @@ void accumulate(const NeighborRun<D>& run, Real& total, Term&& term) {
   for (int k = 0; k < run.count; ++k) total += terms[k];
 }
 
-/// total += coefficient(k) x_ij for every k of a run, in order: accumulate() for a vector term
-/// along the pair's offset, as every c ∇W_ij of a radial kernel is.
-template <int D, class Coefficient>
-void accumulate_along_offsets(const NeighborRun<D>& run, Vector<D>& total, Coefficient&& coefficient) {
+/// total += coefficient(k) gradient(k) for every k of a run, in order: accumulate() for a vector
+/// term along the pair's kernel gradient (gradient as with_gradients hands it out).
+template <int D, class Gradient, class Coefficient>
+void accumulate_along_gradients(const NeighborRun<D>& run, Vector<D>& total, const Gradient& gradient,
+                                Coefficient&& coefficient) {
   std::array<std::array<Real, NeighborRun<D>::capacity>, D> terms;
   for (int k = 0; k < run.count; ++k) {
     const Real c = coefficient(k);
-    for (int d = 0; d < D; ++d) terms[d][k] = c * run.x_ij[d][k];
+    const std::array<Real, D> grad_w = gradient(k);
+    for (int d = 0; d < D; ++d) terms[d][k] = c * grad_w[d];
   }
   for (int k = 0; k < run.count; ++k)
     for (int d = 0; d < D; ++d) total[d] += terms[d][k];

@@ -71,15 +71,14 @@ class FluidWallNeighbors {
     return removed;
   }
 
-  /// Caches `kernel`'s (1/r) dW/dr of every fluid–fluid and fluid → wall pair at the positions
-  /// of the last update_fluid (NeighborList::cache_gradient_factors), for the runs walked until
-  /// the next update, which drops them; passes that take those runs must use the same kernel.
+  /// Caches `kernel`'s gradient ∇W of every fluid–fluid and fluid → wall pair at the positions
+  /// of the last update_fluid (NeighborList::cache_gradients), for the runs walked until the
+  /// next update, which drops them; passes that take those runs must use the same kernel.
   template <class Kernel>
-  void cache_gradient_factors(const Kernel& kernel, const ConstVectorView<D>& fluid_x,
-                              const ConstVectorView<D>& wall_x) {
+  void cache_gradients(const Kernel& kernel, const ConstVectorView<D>& fluid_x, const ConstVectorView<D>& wall_x) {
     const auto derivative_over_r = [&](Real r) { return kernel.derivative_over_r(r); };
-    fluid_list_.cache_gradient_factors(fluid_x, fluid_x, derivative_over_r);
-    fluid_to_walls_list_.cache_gradient_factors(fluid_x, wall_x, derivative_over_r);
+    fluid_list_.cache_gradients(fluid_x, fluid_x, derivative_over_r);
+    fluid_to_walls_list_.cache_gradients(fluid_x, wall_x, derivative_over_r);
   }
 
   /// Fluid updates that re-sorted the fluid and rebuilt the lists, the first included.
@@ -94,15 +93,16 @@ class FluidWallNeighbors {
                               F&& f) const {
     fluid_to_walls_list_.for_each(i, fluid_x, wall_x, f);
   }
-  /// The same walks in runs of NeighborRun (see NeighborList::for_each_run).
-  template <class F>
+  /// The same walks in runs of NeighborRun (see NeighborList::for_each_run; `Offsets` false: a
+  /// pass that needs only the gradients, where they are cached).
+  template <bool Offsets = true, class F>
   void for_each_fluid_run(std::size_t i, const ConstVectorView<D>& fluid_x, F&& f) const {
-    fluid_list_.for_each_run(i, fluid_x, fluid_x, f);
+    fluid_list_.template for_each_run<Offsets>(i, fluid_x, fluid_x, f);
   }
-  template <class F>
+  template <bool Offsets = true, class F>
   void for_each_wall_run(std::size_t i, const ConstVectorView<D>& fluid_x, const ConstVectorView<D>& wall_x,
                          F&& f) const {
-    fluid_to_walls_list_.for_each_run(i, fluid_x, wall_x, f);
+    fluid_to_walls_list_.template for_each_run<Offsets>(i, fluid_x, wall_x, f);
   }
   template <class F>
   void for_each_fluid_neighbor_of_wall(std::size_t b, const ConstVectorView<D>& wall_x,
