@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "tide/core/kernels/cubic_spline.hpp"
 #include "tide/core/log.hpp"
 #include "tide/neighbor/morton.hpp"
 #include "tide/neighbor/neighbor_list.hpp"
@@ -482,6 +483,132 @@ TEST_P(RefinedList, IsTheBruteForceNeighboursAfterMovesOfUpToHalfTheSkin) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Domains, RefinedList, testing::Bool(),
+                         [](const testing::TestParamInfo<bool>& info) { return info.param ? "periodic" : "closed"; });
+
+// Each listed pair's brute-force kernel gradient ∇W_ij = derivative_over_r(r) x_ij at the current
+// positions, by source id, with x_ij the minimum image computed as brute_force does. The domain is
+// longer than twice the support on every axis, so a pair has at most one image in the support.
+template <int D>
+std::vector<std::vector<std::pair<Index, Vector<D>>>> brute_force_gradients(const ParticleSet<D>& queries,
+                                                                            const ParticleSet<D>& sources,
+                                                                            const GridDomain<D>& domain,
+                                                                            const CubicSplineKernel<D>& kernel) {
+  const auto qx = queries[queries.position()];
+  const auto sx = sources[sources.position()];
+  const auto query_ids = queries[queries.id()];
+  const auto source_ids = sources[sources.id()];
+  const auto shifts = image_shifts(domain);
+  std::vector<std::vector<std::pair<Index, Vector<D>>>> gradients(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    for (std::size_t j = 0; j < sources.size(); ++j) {
+      for (const Vector<D>& shift : shifts) {
+        const Vector<D> image = qx[i] - shift;
+        Vector<D> xij;
+        for (int d = 0; d < D; ++d) xij[d] = image[d] - sx.component[d][j];
+        const Real r2 = squared_norm<D>(xij);
+        if (r2 < support * support)
+          gradients[query_ids[i]].emplace_back(source_ids[j], kernel.derivative_over_r(std::sqrt(r2)) * xij);
+      }
+    }
+    std::sort(gradients[query_ids[i]].begin(), gradients[query_ids[i]].end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+  return gradients;
+}
+
+// The gradients a list's runs hand out after cache_gradients, by query id and source id, with
+// the runs walked for gradients only (no positions); `most` is set to the most neighbours of one
+// query.
+template <int D>
+void expect_cached_gradients_are_brute_force(const NeighborList<D>& list, const ParticleSet<D>& queries,
+                                             const ParticleSet<D>& sources, const GridDomain<D>& domain,
+                                             const CubicSplineKernel<D>& kernel, std::size_t& most) {
+  const auto expected = brute_force_gradients<D>(queries, sources, domain, kernel);
+  const auto qx = queries[queries.position()];
+  const auto sx = sources[sources.position()];
+  const auto query_ids = queries[queries.id()];
+  const auto source_ids = sources[sources.id()];
+  most = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    std::vector<std::pair<Index, Vector<D>>> cached;
+    list.template for_each_run<false>(i, qx, sx, [&](const NeighborRun<D>& run) {
+      for (int d = 0; d < D; ++d) ASSERT_NE(run.gradient[d], nullptr);
+      for (int k = 0; k < run.count; ++k) {
+        Vector<D> gradient;
+        for (int d = 0; d < D; ++d) gradient[d] = run.gradient[d][k];
+        cached.emplace_back(source_ids[run.index[k]], gradient);
+      }
+    });
+    std::sort(cached.begin(), cached.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    const auto& mine = expected[query_ids[i]];
+    ASSERT_EQ(cached.size(), mine.size()) << "query id " << query_ids[i];
+    for (std::size_t k = 0; k < cached.size(); ++k) {
+      ASSERT_EQ(cached[k].first, mine[k].first) << "query id " << query_ids[i];
+      // The same operations on the same x_ij: the same numbers.
+      EXPECT_EQ(cached[k].second, mine[k].second) << "query id " << query_ids[i] << ", source id " << mine[k].first;
+    }
+    most = std::max(most, cached.size());
+  }
+}
+
+// cache_gradients keeps every pair's brute-force kernel gradient, in runs longer and shorter than
+// one NeighborRun, for a list built without a skin, for one refined after moves and for a list
+// between two sets; a refine drops the cache, after which a gradients-only walk still hands out
+// offsets.
+class CachedGradients : public testing::TestWithParam<bool> {};
+
+TEST_P(CachedGradients, AreTheBruteForceKernelGradients) {
+  const GridDomain<3> domain = test_domain<3>(GetParam());
+  const CubicSplineKernel<3> kernel(support / CubicSplineKernel<3>::support_factor);
+  const auto derivative_over_r = [&](Real r) { return kernel.derivative_over_r(r); };
+  std::size_t most = 0;
+
+  NeighborGrid<3> grid(domain, support);
+  ParticleSet<3> set = particles_at(make_cloud<3>(Cloud::clustered, domain, grid.cell_size()));
+  ASSERT_EQ(grid.update(set), 0u);
+  const auto x = std::as_const(set)[set.position()];
+  NeighborList<3> built;
+  built.build(grid, x, grid.own_neighbors(), x);
+  built.cache_gradients(x, x, derivative_over_r);
+  expect_cached_gradients_are_brute_force<3>(built, set, set, domain, kernel, most);
+  EXPECT_GT(most, std::size_t(NeighborRun<3>::capacity));
+
+  NeighborGrid<3> source_grid(domain, support);
+  ParticleSet<3> sources = particles_at(make_cloud<3>(Cloud::uniform, domain, source_grid.cell_size()));
+  ASSERT_EQ(source_grid.update(sources), 0u);
+  CrossNeighbors<3> table;
+  table.build(grid, source_grid);
+  const auto source_x = std::as_const(sources)[sources.position()];
+  NeighborList<3> cross;
+  cross.build(grid, x, table, source_x);
+  cross.cache_gradients(x, source_x, derivative_over_r);
+  expect_cached_gradients_are_brute_force<3>(cross, set, sources, domain, kernel, most);
+  EXPECT_GT(most, 0u);
+
+  const Real skin = Real(0.3) * support;
+  NeighborGrid<3> skin_grid(domain, support, SortAlgorithm::radix, CellLookup::automatic, skin);
+  ASSERT_EQ(skin_grid.update(set), 0u);
+  const auto skin_x = std::as_const(set)[set.position()];
+  NeighborList<3> candidates;
+  candidates.build(skin_grid, skin_x, skin_grid.own_neighbors(), skin_x);
+  NeighborList<3> refined;
+  refined.refine(candidates, skin_x, skin_x);
+  refined.cache_gradients(skin_x, skin_x, derivative_over_r);
+  move_by_up_to(set, skin / 2, 11);
+  refined.refine(candidates, skin_x, skin_x);
+  refined.for_each_run<false>(0, skin_x, skin_x, [&](const NeighborRun<3>& run) {
+    EXPECT_EQ(run.gradient[0], nullptr) << "a refine drops the cache";
+    for (int k = 0; k < run.count; ++k) {
+      Real r2 = 0;
+      for (int d = 0; d < 3; ++d) r2 += run.x_ij[d][k] * run.x_ij[d][k];
+      EXPECT_EQ(run.r2[k], r2);
+    }
+  });
+  refined.cache_gradients(skin_x, skin_x, derivative_over_r);
+  expect_cached_gradients_are_brute_force<3>(refined, set, set, domain, kernel, most);
+}
+
+INSTANTIATE_TEST_SUITE_P(Domains, CachedGradients, testing::Bool(),
                          [](const testing::TestParamInfo<bool>& info) { return info.param ? "periodic" : "closed"; });
 
 // FluidWallNeighbors with a skin keeps its sort and candidates while every particle has moved
