@@ -163,6 +163,8 @@ void IncompressibleSph<D>::compute_density_and_factor() {
       [&](const auto& kernel) {
         neighbors_.cache_gradients(kernel, std::as_const(fluid_)[fluid_fields_.position],
                                    std::as_const(walls_)[wall_fields_.position]);
+        uniform_masses_ = !phases_ && passes::masses_are_uniform(std::as_const(fluid_)[fluid_fields_.mass]) &&
+                          passes::masses_are_uniform(std::as_const(walls_)[wall_fields_.mass]);
         const auto nothing_more = [](std::size_t, Real) {};
         if (phases_) {
           passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
@@ -249,6 +251,8 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
     moving.velocity = velocity;
     if (phases_) {
       passes::continuity<D, true>(kernel, fluid_, moving, neighbors_, walls_, wall_fields_, nullptr);
+    } else if (uniform_masses_) {
+      passes::continuity<D, false, true>(kernel, fluid_, moving, neighbors_, walls_, wall_fields_, nullptr);
     } else {
       passes::continuity<D>(kernel, fluid_, moving, neighbors_, walls_, wall_fields_, nullptr);
     }
@@ -293,6 +297,9 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
           if (phases_) {
             passes::pressure_velocity<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, neighbors_,
                                                walls_, wall_fields_, dt, pressure_term_);
+          } else if (uniform_masses_) {
+            passes::pressure_velocity<D, false, true>(kernel, fluid_, fluid_fields_, solve_fields_, pressure,
+                                                      neighbors_, walls_, wall_fields_, dt, pressure_term_);
           } else {
             passes::pressure_velocity<D>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, neighbors_, walls_,
                                          wall_fields_, dt, pressure_term_);

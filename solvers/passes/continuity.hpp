@@ -7,6 +7,7 @@
 #include <span>
 #include <type_traits>
 
+#include "neighbor_masses.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/equation_of_state.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
@@ -31,8 +32,10 @@ struct DensityDiffusion {
 /// in Fourtakas et al. 2019 (eq. 11): diffusing it would slowly flatten the hydrostatic density
 /// profile under gravity. ρ^H_ji = ρ(p = −ρ0 g·x_ij) − ρ0 from the equation of state. With
 /// `NumberDensity` (several fluids, ρ_i = m_i Σ_j W_ij: passes/density_summation.hpp), the rate of
-/// that density, Dρ_i/dt = m_i Σ_j v_ij·∇W_ij, without diffusion.
-template <int D, bool NumberDensity = false, class Kernel>
+/// that density, Dρ_i/dt = m_i Σ_j v_ij·∇W_ij, without diffusion. With `UniformMasses` (every
+/// fluid particle has one mass and every wall particle one: masses_are_uniform), the pair loops
+/// without diffusion read m_j as such (NeighborMasses), with the same results.
+template <int D, bool NumberDensity = false, bool UniformMasses = false, class Kernel>
 void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                 const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
                 const DensityDiffusion<D>* diffusion) {
@@ -48,8 +51,10 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
   const Real diffusion_scale = diffusion ? diffusion->delta * h * diffusion->sound_speed : Real(0);
   const Real rest_density = diffusion ? diffusion->eos.rest_density() : Real(0);
   const Real rest_pressure = diffusion ? diffusion->eos.pressure(rest_density) : Real(0);  // the background pressure
+  const NeighborMasses<UniformMasses> fluid_masses(mass);
+  const NeighborMasses<UniformMasses> wall_masses(wall_mass);
   // The weight of neighbour j's velocity: its mass, or 1 for the number density.
-  const auto weight = [&](std::span<const Real> masses, Index j) {
+  const auto weight = [&](const NeighborMasses<UniformMasses>& masses, Index j) {
     if constexpr (NumberDensity) {
       return Real(1);
     } else {
@@ -80,7 +85,7 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
             const std::array<Real, D> grad_w = gradient(k);
             Real v_dot_grad_w = 0;
             for (int d = 0; d < D; ++d) v_dot_grad_w += (v_i[d] - v.component[d][j]) * grad_w[d];
-            return weight(mass, j) * v_dot_grad_w;
+            return weight(fluid_masses, j) * v_dot_grad_w;
           });
         });
       });
@@ -98,7 +103,7 @@ void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D
             if constexpr (decltype(moving)::value) v_ib -= surface_velocity.component[d][b];
             v_dot_grad_w += v_ib * grad_w[d];
           }
-          return weight(wall_mass, b) * v_dot_grad_w;
+          return weight(wall_masses, b) * v_dot_grad_w;
         });
       });
     };

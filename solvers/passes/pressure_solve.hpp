@@ -17,6 +17,7 @@
 #include <cmath>
 #include <span>
 
+#include "neighbor_masses.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/fluid_wall_neighbors.hpp"
 #include "tide/solvers/incompressible_sph.hpp"
@@ -93,8 +94,10 @@ void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFie
 /// several fluids: v_i = v*_i − (Δt/m_i) Σ_j (p_i V_i² + p_j V_j²) ∇W_ij with V = m/ρ (walls: m_b/ρ_b).
 /// `pressure_term` (one entry per fluid particle) is scratch: one fluid takes p_j/ρ_j² from it,
 /// computed once per particle rather than once per pair (a division per pair was ~7% of a 2D
-/// DFSPH run, docs/performance.md); the sums are bitwise those of the division per pair.
-template <int D, bool NumberDensity = false, class Kernel>
+/// DFSPH run, docs/performance.md); the sums are bitwise those of the division per pair. With
+/// `UniformMasses` (one fluid mass, one wall mass: masses_are_uniform), m_j is read as such
+/// (NeighborMasses), with the same results.
+template <int D, bool NumberDensity = false, bool UniformMasses = false, class Kernel>
 void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                        const PressureSolveFields<D>& s, std::span<const Real> pressure,
                        const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
@@ -107,6 +110,8 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
   const auto wall_mass = walls[w.mass];
   const auto wall_density = walls[w.density];
   const auto wall_pressure = walls[w.pressure];
+  const NeighborMasses<UniformMasses> fluid_masses(mass);
+  const NeighborMasses<UniformMasses> wall_masses(wall_mass);
   auto v = fluid[f.velocity];
   if constexpr (!NumberDensity)
     for_each_particle(fluid.size(), [&](std::size_t i) { pressure_term[i] = pressure[i] / (density[i] * density[i]); });
@@ -115,7 +120,7 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
     const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
     const Real inverse_mass_i = 1 / mass[i];
     // Without a branch, so that accumulate_along_gradients() vectorises it; the pair i–i adds an exact zero.
-    const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a, std::span<const Real> masses,
+    const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a, const NeighborMasses<UniformMasses>& masses,
                                    std::span<const Real> densities, std::span<const Real> pressures) {
       with_gradients(kernel, run, [&](const auto& gradient) {
         accumulate_along_gradients(run, a, gradient, [&](int k) {
@@ -132,19 +137,19 @@ void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
     Vector<D> a = Vector<D>::Zero();
     if constexpr (NumberDensity) {
       neighbors.template for_each_fluid_run<false>(
-          i, x, [&](const NeighborRun<D>& run) { pressure_push(run, a, mass, density, pressure); });
+          i, x, [&](const NeighborRun<D>& run) { pressure_push(run, a, fluid_masses, density, pressure); });
     } else {
       neighbors.template for_each_fluid_run<false>(i, x, [&](const NeighborRun<D>& run) {
         with_gradients(kernel, run, [&](const auto& gradient) {
           accumulate_along_gradients(run, a, gradient, [&](int k) {
             const Index j = run.index[k];
-            return -(mass[j] * (p_over_rho2_i + pressure_term[j]));
+            return -(fluid_masses[j] * (p_over_rho2_i + pressure_term[j]));
           });
         });
       });
     }
     neighbors.template for_each_wall_run<false>(i, x, wall_x, [&](const NeighborRun<D>& run) {
-      pressure_push(run, a, wall_mass, wall_density, wall_pressure);
+      pressure_push(run, a, wall_masses, wall_density, wall_pressure);
     });
     v.set(i, predicted[i] + dt * a);
   });

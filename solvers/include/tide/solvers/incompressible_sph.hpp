@@ -96,6 +96,9 @@ class IncompressibleSph final : public Simulation<D> {
   PressureSolveFields<D> solve_fields_;
   std::vector<Real> before_sweep_;   // p⁽ᵏ⁻¹⁾ of the Chebyshev recurrence; scratch of one solve, not sorted
   std::vector<Real> pressure_term_;  // p/ρ² of one fluid in a sweep (passes::pressure_velocity); scratch
+  // One fluid whose particles all have one mass, and walls of one mass: the sweeps read the masses
+  // so (passes::NeighborMasses). Set with the gradient cache, after every neighbour update.
+  bool uniform_masses_ = false;
   WallFields<D> wall_fields_;
   FluidWallNeighbors<D> neighbors_;
   double time_ = 0;
