@@ -120,7 +120,8 @@ class NeighborList {
       for (int d = 0; d < D; ++d)
         run.gradient[d] = particle_gradients ? particle_gradients + d * total + first : nullptr;
       if (table_->periodic()) {
-        for (int k = 0; k < run.count; ++k) run.index[k] = entry[k] & index_mask;
+        for (int k = 0; k < run.count; ++k) run.unpacked_index[k] = entry[k] & index_mask;
+        run.index = run.unpacked_index.data();
         if (offsets) {
           for (int k = 0; k < run.count; ++k) {
             const Vector<D> x_image = x - table_->shifts_[entry[k] >> index_bits];
@@ -128,7 +129,7 @@ class NeighborList {
           }
         }
       } else {
-        for (int k = 0; k < run.count; ++k) run.index[k] = entry[k];
+        run.index = entry;
         if (offsets) {
           for (int k = 0; k < run.count; ++k)
             for (int d = 0; d < D; ++d) run.x_ij[d][k] = x[d] - source_x.component[d][entry[k]];

@@ -11,12 +11,15 @@ namespace tide {
 /// image) by component and r² = |x_ij|², in the neighbour list's order; and, where the list has
 /// them cached (NeighborList::cache_gradients), each pair's kernel gradient ∇W_ij by component.
 /// A walk asked for gradients only (NeighborList::for_each_run<false>) leaves x_ij and r² unset
-/// when it has the gradients.
+/// when it has the gradients. The indices are the list's own entries, read in place, except on a
+/// periodic domain, whose entries also carry an image shift: there they are unpacked into
+/// `unpacked_index`.
 template <int D>
 struct NeighborRun {
   static constexpr int capacity = 64;
   int count = 0;
-  std::array<Index, capacity> index;
+  const Index* index = nullptr;  // count entries
+  std::array<Index, capacity> unpacked_index;
   std::array<std::array<Real, capacity>, D> x_ij;
   std::array<Real, capacity> r2;
   std::array<const Real*, D> gradient{};  // count entries each, or null
