@@ -358,12 +358,26 @@ TYPED_TEST(KernelTest, VanishesAtAndBeyondTheSupport) {
                          Real(1e3) * support, std::numeric_limits<Real>::infinity()}) {
       EXPECT_EQ(kernel.value(r), 0) << "r = " << r;
       EXPECT_EQ(kernel.derivative(r), 0) << "r = " << r;
+      if constexpr (requires { kernel.derivative_over_r(r); }) {
+        EXPECT_EQ(kernel.derivative_over_r(r), 0) << "r = " << r;
+      }
       const Vector<D> gradient = kernel.gradient(Vector<D>::Constant(r / std::sqrt(Real(D))), r);
       for (int d = 0; d < D; ++d) EXPECT_EQ(gradient[d], 0) << "r = " << r;
       if constexpr (requires { kernel.laplacian(r); }) {
         EXPECT_EQ(kernel.laplacian(r), 0);
       }
     }
+  }
+}
+
+// The pair loops' kernels have no branch on r (so that they vectorise): a NaN distance, from a
+// state that has blown up, must still give a NaN rather than a zero the state check cannot see.
+TYPED_TEST(KernelTest, NanDistanceGivesNan) {
+  const TypeParam kernel(static_cast<Real>(smoothing_lengths[0]));
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(kernel.value(nan)));
+  if constexpr (requires { kernel.derivative_over_r(nan); }) {
+    EXPECT_TRUE(std::isnan(kernel.derivative_over_r(nan)));
   }
 }
 

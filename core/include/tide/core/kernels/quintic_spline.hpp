@@ -33,15 +33,16 @@ class QuinticSplineKernel {
   Real smoothing_length() const { return smoothing_length_; }
   Real support_radius() const { return support_radius_; }
 
+  // Each piece is computed and one selected, as in CubicSplineKernel: a blend in a pair loop,
+  // which then vectorises, rather than an unpredictable branch.
   Real value(Real r) const {
-    if (r >= support_radius_) return 0;
     const Real q = r * inverse_h_;
-    const Real three_minus_q = outer_distance(r);
-    if (q >= 2) return value_scale_ * pow5(three_minus_q);
-    if (q >= 1) return value_scale_ * (pow5(three_minus_q) - 6 * pow5(2 - q));
+    const Real outer = pow5(outer_distance(r));
+    const Real middle = outer - 6 * pow5(2 - q);
     // The three quintics expanded: 66 − 60q² + 30q⁴ − 10q⁵, cheaper and without their cancellation.
     const Real q2 = q * q;
-    return value_scale_ * (66 + q2 * (-60 + q2 * (30 - 10 * q)));
+    const Real inner = 66 + q2 * (-60 + q2 * (30 - 10 * q));
+    return r >= support_radius_ ? Real(0) : value_scale_ * (q >= 2 ? outer : q >= 1 ? middle : inner);
   }
 
   Real derivative(Real r) const {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <numbers>
 
 #include "tide/core/kernels/smoothing_length.hpp"
@@ -30,9 +31,10 @@ class WendlandC4Kernel {
   Real smoothing_length() const { return smoothing_length_; }
   Real support_radius() const { return support_radius_; }
 
+  // Zero outside the support without a branch or a select (1 − u is clamped at 0 there), the same
+  // numbers inside: a pair loop over it vectorises (GCC 12 kept a select on r as a branch).
   Real value(Real r) const {
-    if (r >= support_radius_) return 0;
-    const Real u = r * inverse_support_;
+    const Real u = clamped_u(r);
     const Real t = one_minus_u(r);
     const Real t2 = t * t;
     return value_scale_ * t2 * t2 * t2 * (1 + u * (6 + Real(35.0 / 3.0) * u));
@@ -47,13 +49,13 @@ class WendlandC4Kernel {
     return derivative_scale_ * u * t2 * t2 * t * (1 + 5 * u);
   }
 
-  // (1/r) dW/dr = −56/3 σ / H^(D+2) · (1 − u)⁵ (1 + 5u): no division, exactly zero at r = 0.
-  // Selected rather than branched on, so that a pair loop vectorises (see CubicSplineKernel).
+  // (1/r) dW/dr = −56/3 σ / H^(D+2) · (1 − u)⁵ (1 + 5u): no division, exactly zero at r = 0, and
+  // zero outside the support without a branch, as value().
   Real derivative_over_r(Real r) const {
-    const Real u = r * inverse_support_;
+    const Real u = clamped_u(r);
     const Real t = one_minus_u(r);
     const Real t2 = t * t;
-    return r >= support_radius_ ? Real(0) : gradient_scale_ * t2 * t2 * t * (1 + 5 * u);
+    return gradient_scale_ * t2 * t2 * t * (1 + 5 * u);
   }
 
   Vector<D> gradient(const Vector<D>& x_ij, Real r) const {
@@ -64,8 +66,11 @@ class WendlandC4Kernel {
  private:
   static constexpr double sigma = D == 2 ? 9.0 / std::numbers::pi : 495.0 / (32.0 * std::numbers::pi);
 
-  // 1 − u taken from the distance to the support edge, so it stays positive inside the support.
-  Real one_minus_u(Real r) const { return (support_radius_ - r) * inverse_support_; }
+  // 1 − u taken from the distance to the support edge, so it stays positive inside the support;
+  // 0 outside it (a NaN r stays NaN).
+  Real one_minus_u(Real r) const { return std::max(support_radius_ - r, Real(0)) * inverse_support_; }
+  // u, at most 1: outside the support (an infinite r included) the clamped 1 − u then gives 0.
+  Real clamped_u(Real r) const { return std::min(r, support_radius_) * inverse_support_; }
 
   Real smoothing_length_;
   Real support_radius_;    // H = 2h
