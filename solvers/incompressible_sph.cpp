@@ -198,7 +198,7 @@ void IncompressibleSph<D>::compute_non_pressure_acceleration() {
           lap(clock, pass_times_.wall_state);
         }
         passes::fluid_acceleration<D, false>(kernel, viscosity, {}, fluid_, fluid_fields_, neighbors_, walls_,
-                                             wall_fields_, gravity_, phases_ ? &multiphase : nullptr);
+                                             wall_fields_, gravity_, {}, phases_ ? &multiphase : nullptr);
         lap(clock, pass_times_.momentum);
       },
       kernel_);

@@ -161,8 +161,10 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
         lap(clock, pass_times_.density);
         passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, &wall_pressure);
         lap(clock, pass_times_.wall_state);
+        const std::span<Real> scratch =
+            phases_ ? std::span<Real>{} : neighbors_.pass_scratch(fluid_.size() + walls_.size());
         passes::fluid_acceleration<D>(kernel, viscosity, stress, fluid_, fluid_fields_, neighbors_, walls_,
-                                      wall_fields_, gravity, phases_ ? &multiphase : nullptr);
+                                      wall_fields_, gravity, scratch, phases_ ? &multiphase : nullptr);
         lap(clock, pass_times_.momentum);
       },
       kernel_);

@@ -127,13 +127,16 @@ struct MultiphaseTerms {
 /// its pressure solve. With `Multiphase`, the number-density form of Hu & Adams 2006 (eq. 8):
 /// a_i = −(1/m_i) Σ_j (p_i V_i² + p_j V_j²) ∇W_ij with V = m/ρ, which stays free of spurious
 /// interface forces at any density ratio, and the laminar viscosity of
-/// detail::multiphase_viscous_term; for particles of one mass it is the single-phase form.
+/// detail::multiphase_viscous_term; for particles of one mass it is the single-phase form. With
+/// one fluid and `WithPressure`, `scratch` (at least one entry per fluid and wall particle) takes
+/// each particle's p/ρ², computed once per particle rather than once per pair (the same numbers).
 template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, bool Multiphase = false,
           class Kernel>
 void momentum(const Kernel& kernel, const ViscositySettings& settings,
               [[maybe_unused]] const ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
               const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
-              const Vector<D>& gravity, [[maybe_unused]] const MultiphaseTerms* phases = nullptr) {
+              const Vector<D>& gravity, [[maybe_unused]] std::span<Real> scratch,
+              [[maybe_unused]] const MultiphaseTerms* phases = nullptr) {
   static_assert(!(Multiphase && ArtificialStress), "the artificial stress is not compiled for several fluids");
   const auto x = std::as_const(fluid)[f.position];
   const auto v = std::as_const(fluid)[f.velocity];
@@ -147,6 +150,15 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
   const auto wall_density = walls[w.density];
   const auto wall_pressure = walls[w.pressure];
   auto acceleration = fluid[f.acceleration];
+  std::span<const Real> fluid_p_over_rho2, wall_p_over_rho2;
+  if constexpr (WithPressure && !Multiphase) {
+    const auto p_over_rho2 = [](std::span<Real> out, std::span<const Real> p, std::span<const Real> rho) {
+      for_each_particle(out.size(), [&](std::size_t i) { out[i] = p[i] / (rho[i] * rho[i]); });
+      return std::span<const Real>(out);
+    };
+    fluid_p_over_rho2 = p_over_rho2(scratch.first(fluid.size()), pressure, density);
+    wall_p_over_rho2 = p_over_rho2(scratch.subspan(fluid.size(), walls.size()), wall_pressure, wall_density);
+  }
   for_each_particle(fluid.size(), [&](std::size_t i) {
     const Vector<D> v_i = v[i];
     const Real rho_i = density[i];
@@ -211,7 +223,7 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
       // a −= pressure term, a += viscous term. The pair i–i gives zeros. One run of fluid or wall
       // neighbours (walls with their extrapolated p and ρ), viscous or not (a std::bool_constant).
       const auto add_run = [&](auto viscous, const NeighborRun<D>& run, std::span<const Real> masses,
-                               std::span<const Real> densities, std::span<const Real> pressures,
+                               std::span<const Real> densities, std::span<const Real> p_over_rho2,
                                const ConstVectorView<D>& velocities) {
         constexpr bool viscous_run = decltype(viscous)::value;
         std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
@@ -222,7 +234,7 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
             const Real rho_j = densities[j];
             const std::array<Real, D> grad_w = gradient(k);
             if constexpr (WithPressure) {
-              const Real scale = masses[j] * pressure_term(pressures[j] / (rho_j * rho_j), r);
+              const Real scale = masses[j] * pressure_term(p_over_rho2[j], r);
               for (int d = 0; d < D; ++d) pressure_terms[d][k] = scale * grad_w[d];
             }
             if constexpr (viscous_run) {
@@ -249,17 +261,18 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
           }
         }
       };
-      neighbors.for_each_fluid_run(
-          i, x, [&](const NeighborRun<D>& run) { add_run(std::true_type{}, run, mass, density, pressure, v); });
+      neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
+        add_run(std::true_type{}, run, mass, density, fluid_p_over_rho2, v);
+      });
       if (!WithPressure && !settings.walls_viscous) {
         acceleration.set(i, a);
         return;
       }
       neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
         if (settings.walls_viscous) {
-          add_run(std::true_type{}, run, wall_mass, wall_density, wall_pressure, wall_v);
+          add_run(std::true_type{}, run, wall_mass, wall_density, wall_p_over_rho2, wall_v);
         } else {
-          add_run(std::false_type{}, run, wall_mass, wall_density, wall_pressure, wall_v);
+          add_run(std::false_type{}, run, wall_mass, wall_density, wall_p_over_rho2, wall_v);
         }
       });
     }
@@ -269,22 +282,23 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
 
 /// momentum() compiled for the viscosity model of `settings`, for artificial stress on or off and
 /// for one fluid or several (`phases` set), picked once per pass outside the particle loop: a
-/// scene without artificial stress or a second fluid runs a pass without them.
+/// scene without artificial stress or a second fluid runs a pass without them. `scratch` as for
+/// momentum().
 template <int D, bool WithPressure = true, class Kernel>
 void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, const ArtificialStressSettings& stress,
                         ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
                         const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity,
-                        const MultiphaseTerms* phases = nullptr) {
+                        std::span<Real> scratch, const MultiphaseTerms* phases = nullptr) {
   const auto run = [&]<scene::ViscosityModel Model, bool Stress>() {
-    momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, neighbors, walls, w, gravity);
+    momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, neighbors, walls, w, gravity, scratch);
   };
   if (phases) {
     if (settings.model == scene::ViscosityModel::artificial) {
-      momentum<D, scene::ViscosityModel::artificial, WithPressure, false, true>(kernel, settings, stress, fluid, f,
-                                                                                neighbors, walls, w, gravity, phases);
+      momentum<D, scene::ViscosityModel::artificial, WithPressure, false, true>(
+          kernel, settings, stress, fluid, f, neighbors, walls, w, gravity, {}, phases);
     } else {
       momentum<D, scene::ViscosityModel::laminar, WithPressure, false, true>(kernel, settings, stress, fluid, f,
-                                                                             neighbors, walls, w, gravity, phases);
+                                                                             neighbors, walls, w, gravity, {}, phases);
     }
     return;
   }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -79,6 +80,14 @@ class FluidWallNeighbors {
     const auto derivative_over_r = [&](Real r) { return kernel.derivative_over_r(r); };
     fluid_list_.cache_gradients(fluid_x, fluid_x, derivative_over_r);
     fluid_to_walls_list_.cache_gradients(fluid_x, wall_x, derivative_over_r);
+  }
+
+  /// `count` Reals of the update's sort and reorder arena, which no update needs between two
+  /// calls of update_fluid: scratch for one pass, valid until the next call of this or of
+  /// update_fluid.
+  std::span<Real> pass_scratch(std::size_t count) {
+    arena_.reset(ScratchArena::aligned(count * sizeof(Real)));
+    return arena_.take<Real>(count);
   }
 
   /// Fluid updates that re-sorted the fluid and rebuilt the lists, the first included.
@@ -165,7 +174,7 @@ std::size_t FluidWallNeighbors<D>::bytes() const {
 
 template <int D>
 void FluidWallNeighbors<D>::add_memory(MemoryUsage& usage) const {
-  usage.add("arena.sort and reorder", arena_.bytes());
+  usage.add("arena.sort and reorder", arena_.bytes());  // and the passes' scratch
   fluid_grid_.add_memory(usage, "fluid grid");
   wall_grid_.add_memory(usage, "wall grid");
   fluid_to_walls_.add_memory(usage, "fluid-wall table");
