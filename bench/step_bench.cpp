@@ -46,8 +46,10 @@
 //                     Both are per process: filter one benchmark for a clean figure
 //   f_nbr, f_density, f_wall, f_momentum, f_solve, f_integr, f_shift
 //                     share of the step in each part, from Simulation::pass_times(): neighbour
-//                     search (sort, reorder, cell tables, neighbour lists), density (+ EOS; for the
-//                     incompressible schemes + the pressure factor), wall state, momentum
+//                     search (sort, reorder, cell tables, neighbour lists; for WCSPH with a skin and
+//                     summation density also that density, summed as the lists are refined),
+//                     density (+ EOS; for the incompressible schemes + the pressure factor), wall
+//                     state, momentum
 //                     (incompressible: the non-pressure forces), the pressure solves, integration
 //                     (kicks, drift, state check), particle shifting; f_other = 1 - their sum
 //   density_iter, divergence_iter   mean iterations per step of the incompressible solves

@@ -72,7 +72,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
 
   build_pipeline();
   neighbors_.set_walls(walls_);
-  neighbors_.update_fluid(fluid_, walls_);
+  neighbors_.update_fluid(fluid_, walls_, listing());
   compute_interactions(setup::gravity_at<D>(scene_, time_));
   check_state();
 }
@@ -105,6 +105,14 @@ void Wcsph<D>::build_pipeline() {
 template <int D>
 Vector<D> Wcsph<D>::gravity() const {
   return setup::gravity_at<D>(scene_, time_);
+}
+
+template <int D>
+typename FluidWallNeighbors<D>::Listing Wcsph<D>::listing() const {
+  // Summation density is the first pass to walk the pairs after an update, and needs only r²: it
+  // lists them (walk_fluid_pairs).
+  using Listing = typename FluidWallNeighbors<D>::Listing;
+  return scene_.solver.density == scene::DensityMethod::summation ? Listing::in_next_pair_walk : Listing::now;
 }
 
 template <int D>
@@ -146,6 +154,8 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
     const Real p = phases_->table[phase[i]].eos.pressure(rho);
     pressure[i] = clamp ? std::max(p, Real(0)) : p;
   };
+  // A density pass that also lists the neighbours counts as search: the two cannot be timed apart.
+  double& density_time = neighbors_.listing_pending() ? pass_times_.neighbor_search : pass_times_.density;
   auto clock = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& kernel) {
@@ -158,7 +168,7 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
           const auto density = std::as_const(fluid_)[fluid_fields_.density];
           for_each_particle(fluid_.size(), [&](std::size_t i) { set_pressure(i, density[i]); });
         }
-        lap(clock, pass_times_.density);
+        lap(clock, density_time);
         passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, &wall_pressure);
         lap(clock, pass_times_.wall_state);
         const std::span<Real> scratch =
@@ -234,7 +244,7 @@ StepReport Wcsph<D>::step() {
                             fluid_fields_);
   }
   lap(clock, pass_times_.integration);
-  report.removed = neighbors_.update_fluid(fluid_, walls_);
+  report.removed = neighbors_.update_fluid(fluid_, walls_, listing());
   lap(clock, pass_times_.neighbor_search);
   const Vector<D> gravity = setup::gravity_at<D>(scene_, time_ + dt);
   if (scene_.solver.density == scene::DensityMethod::continuity) {

@@ -446,17 +446,24 @@ std::vector<std::vector<Index>> found_by_id(const NeighborList<3>& list, const P
 // A list built on grids with a skin holds candidates up to support + skin; after every particle
 // has moved up to half the skin, its refinement is exactly the brute-force neighbours at the new
 // positions, in the candidates' order, on closed and periodic domains.
-class RefinedList : public testing::TestWithParam<bool> {};
+class RefinedList : public testing::TestWithParam<bool> {
+ protected:
+  // Sorts the clustered cloud and lists its candidates.
+  void SetUp() override {
+    ASSERT_EQ(grid.update(set), 0u);
+    const auto x = std::as_const(set)[set.position()];
+    candidates.build(grid, x, grid.own_neighbors(), x);
+  }
 
-TEST_P(RefinedList, IsTheBruteForceNeighboursAfterMovesOfUpToHalfTheSkin) {
   const GridDomain<3> domain = test_domain<3>(GetParam());
   const Real skin = Real(0.3) * support;
-  NeighborGrid<3> grid(domain, support, SortAlgorithm::radix, CellLookup::automatic, skin);
+  NeighborGrid<3> grid{domain, support, SortAlgorithm::radix, CellLookup::automatic, skin};
   ParticleSet<3> set = particles_at(make_cloud<3>(Cloud::clustered, domain, grid.cell_size()));
-  ASSERT_EQ(grid.update(set), 0u);
-  const auto x = std::as_const(set)[set.position()];
   NeighborList<3> candidates;
-  candidates.build(grid, x, grid.own_neighbors(), x);
+};
+
+TEST_P(RefinedList, IsTheBruteForceNeighboursAfterMovesOfUpToHalfTheSkin) {
+  const auto x = std::as_const(set)[set.position()];
   std::vector<std::vector<Index>> candidate_order(set.size());
   for (std::size_t i = 0; i < set.size(); ++i)
     candidates.for_each(i, x, x, [&](Index j, const Vector<3>&, Real) { candidate_order[i].push_back(j); });
@@ -478,6 +485,46 @@ TEST_P(RefinedList, IsTheBruteForceNeighboursAfterMovesOfUpToHalfTheSkin) {
       ASSERT_NE(next, candidate_order[i].end()) << "particle id " << ids[i] << ": not in the candidates' order";
       ++next;
     }
+  }
+  EXPECT_GT(pairs, 10 * set.size());
+}
+
+// A pair of the list as a walk hands it out: source index and r².
+using ListedPair = std::pair<Index, Real>;
+
+// What for_each_run hands out for particle i's pairs: indices and r².
+std::vector<ListedPair> listed_by_runs(const NeighborList<3>& list, std::size_t i, const ConstVectorView<3>& x) {
+  std::vector<ListedPair> listed;
+  list.for_each_run(i, x, x, [&](const NeighborRun<3>& run) {
+    for (int k = 0; k < run.count; ++k) listed.emplace_back(run.index[k], run.r2[k]);
+  });
+  return listed;
+}
+
+// A refinement that hands each particle's pairs to a visitor lists what the plain refinement
+// does, and hands out exactly (bitwise) the indices and r² a later walk of the list computes.
+TEST_P(RefinedList, HandsEachParticlesPairsWithTheRSquaredOfAWalk) {
+  const auto x = std::as_const(set)[set.position()];
+  move_by_up_to(set, skin / 2, 3);
+
+  NeighborList<3> plain;
+  plain.refine(candidates, x, x);
+  NeighborList<3> visited;
+  std::vector<std::vector<ListedPair>> handed_out(set.size());
+  std::vector<int> visits(set.size(), 0);
+  visited.refine(candidates, x, x, [&](std::size_t i, const auto& runs) {
+    ++visits[i];
+    runs([&](const NeighborRun<3>& run) {
+      for (int k = 0; k < run.count; ++k) handed_out[i].emplace_back(run.index[k], run.r2[k]);
+    });
+  });
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    ASSERT_EQ(visits[i], 1) << "particle " << i;
+    const std::vector<ListedPair> walked = listed_by_runs(plain, i, x);
+    ASSERT_EQ(handed_out[i], walked) << "particle " << i;
+    ASSERT_EQ(listed_by_runs(visited, i, x), walked) << "particle " << i;
+    pairs += walked.size();
   }
   EXPECT_GT(pairs, 10 * set.size());
 }
@@ -664,6 +711,48 @@ TEST(FluidWallNeighbors, RebuildsOnlyWhenAParticleOutrunsHalfTheSkin) {
   EXPECT_EQ(neighbors.update_fluid(fluid, walls), 1u);
   EXPECT_EQ(neighbors.builds(), 3u) << "one particle outside the domain";
   expect_brute_force("after one particle left");
+}
+
+// An update that leaves the listing to the next pair walk hands out, in that walk, the pairs and
+// r² an update that lists at once hands out (bitwise), fluid before walls for every particle,
+// and leaves the same lists for the walks after it.
+TEST(FluidWallNeighbors, ListingInThePairWalkHandsOutWhatListingAtOnceDoes) {
+  const GridDomain<3> domain = test_domain<3>(false);
+  const Real skin = Real(0.3) * support;
+  using Listing = FluidWallNeighbors<3>::Listing;
+  FluidWallNeighbors<3> at_once(domain, support, skin);
+  FluidWallNeighbors<3> in_walk(domain, support, skin);
+  ParticleSet<3> walls = particles_at(make_cloud<3>(Cloud::sheet, domain, at_once.fluid_grid().cell_size()));
+  ParticleSet<3> fluid = particles_at(make_cloud<3>(Cloud::clustered, domain, at_once.fluid_grid().cell_size()));
+  ParticleSet<3> fluid_copy = fluid;
+  at_once.set_walls(walls);
+  in_walk.set_walls(walls);
+  const auto wall_x = std::as_const(walls)[walls.position()];
+  // Per particle: its fluid pairs, then its wall pairs, each list ended by a marker.
+  const auto walk = [&](FluidWallNeighbors<3>& neighbors, const ParticleSet<3>& set) {
+    std::vector<std::vector<ListedPair>> walked(set.size());
+    const auto collect = [&](std::size_t i, const auto& runs) {
+      runs([&](const NeighborRun<3>& run) {
+        for (int k = 0; k < run.count; ++k) walked[i].emplace_back(run.index[k], run.r2[k]);
+      });
+      walked[i].emplace_back(Index(-1), Real(-1));
+    };
+    neighbors.walk_fluid_pairs(set[set.position()], wall_x, collect, collect);
+    return walked;
+  };
+  for (int update = 0; update < 3; ++update) {
+    ASSERT_EQ(at_once.update_fluid(fluid, walls, Listing::now),
+              in_walk.update_fluid(fluid_copy, walls, Listing::in_next_pair_walk));
+    EXPECT_FALSE(at_once.listing_pending());
+    EXPECT_TRUE(in_walk.listing_pending());
+    const auto expected = walk(at_once, fluid);
+    EXPECT_EQ(walk(in_walk, fluid_copy), expected) << "update " << update;
+    EXPECT_FALSE(in_walk.listing_pending());
+    EXPECT_EQ(walk(in_walk, fluid_copy), expected) << "update " << update << ", a second walk";
+    move_by_up_to(fluid, skin / 4, 11 + update);
+    move_by_up_to(fluid_copy, skin / 4, 11 + update);
+  }
+  EXPECT_EQ(in_walk.builds(), at_once.builds());
 }
 
 TEST(NeighborGrid, RejectsBadGeometry) {

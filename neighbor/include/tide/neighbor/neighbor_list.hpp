@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -46,7 +47,32 @@ class NeighborList {
   /// Lists the entries of `candidates` (built from grids with a skin) inside the support at the
   /// positions `query_x` and `source_x`, in their order. `candidates` must outlive the list, and
   /// its grids and table stay unchanged until the next refine.
-  void refine(const NeighborList& candidates, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x);
+  void refine(const NeighborList& candidates, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x) {
+    refine(candidates, query_x, source_x, IgnorePairs{});
+  }
+
+  /// refine(), handing each query particle's listed pairs, as they are listed, to
+  /// visit(i, runs): runs(f) calls f(run) for the NeighborRuns of particle i in the list's order,
+  /// with indices and r² (the refinement's own, bitwise those of for_each_run) but no x_ij or
+  /// gradients. A pass that needs no more than r² then walks the candidates once for both jobs.
+  template <class Visit>
+  void refine(const NeighborList& candidates, const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x,
+              Visit&& visit) {
+    queries_ = candidates.queries_;
+    table_ = candidates.table_;
+    gradients_cached_ = false;
+    span_.resize(candidates.span_.size());
+    blocks_.resize(candidates.blocks_.size());
+    parallel_blocks(blocks_.size(), 1, [&](std::size_t first_block, std::size_t last_block) {
+      for (std::size_t block = first_block; block < last_block; ++block) {
+        if (table_->periodic()) {
+          refine_block<true>(candidates, block, query_x, source_x, visit);
+        } else {
+          refine_block<false>(candidates, block, query_x, source_x, visit);
+        }
+      }
+    });
+  }
 
   /// Keeps ∇W_ij = derivative_over_r(r) x_ij of every listed pair at the positions `query_x` and
   /// `source_x` (those of the last build or refine), computed from the x_ij and r² of
@@ -119,9 +145,8 @@ class NeighborList {
       const std::uint32_t* const entry = first_entry + first;
       for (int d = 0; d < D; ++d)
         run.gradient[d] = particle_gradients ? particle_gradients + d * total + first : nullptr;
+      set_indices(run, entry, table_->periodic());
       if (table_->periodic()) {
-        for (int k = 0; k < run.count; ++k) run.unpacked_index[k] = entry[k] & index_mask;
-        run.index = run.unpacked_index.data();
         if (offsets) {
           for (int k = 0; k < run.count; ++k) {
             const Vector<D> x_image = x - table_->shifts_[entry[k] >> index_bits];
@@ -129,7 +154,6 @@ class NeighborList {
           }
         }
       } else {
-        run.index = entry;
         if (offsets) {
           for (int k = 0; k < run.count; ++k)
             for (int d = 0; d < D; ++d) run.x_ij[d][k] = x[d] - source_x.component[d][entry[k]];
@@ -184,6 +208,16 @@ class NeighborList {
     return {queries_->cell_start_[first_cell], queries_->cell_start_[last_cell]};
   }
 
+  // Points run.index at `entry`'s count source indices, unpacked on a periodic domain.
+  static void set_indices(NeighborRun<D>& run, const std::uint32_t* entry, bool periodic) {
+    if (!periodic) {
+      run.index = entry;
+      return;
+    }
+    for (int k = 0; k < run.count; ++k) run.unpacked_index[k] = entry[k] & index_mask;
+    run.index = run.unpacked_index.data();
+  }
+
   template <class F>
   static void call(std::uint32_t j, const Vector<D>& x, const ConstVectorView<D>& source_x, F& f) {
     Vector<D> xij;
@@ -194,10 +228,17 @@ class NeighborList {
   // Lists the particles of cells [first_cell, last_cell) into `out`.
   void fill_block(std::size_t first_cell, std::size_t last_cell, const ConstVectorView<D>& query_x,
                   const ConstVectorView<D>& source_x, IndexArray& out);
-  // The same from the entries of `candidates`, for the block of cells `block`.
-  template <bool periodic>
+  // What refine() without a visitor hands the pairs to: no r² is kept for it.
+  struct IgnorePairs {
+    template <class Runs>
+    void operator()(std::size_t, const Runs&) const {}
+  };
+
+  // The same from the entries of `candidates`, for the block of cells `block`, visiting each
+  // particle's pairs (refine()).
+  template <bool periodic, class Visit>
   void refine_block(const NeighborList& candidates, std::size_t block, const ConstVectorView<D>& query_x,
-                    const ConstVectorView<D>& source_x);
+                    const ConstVectorView<D>& source_x, Visit& visit);
 
   const NeighborGrid<D>* queries_ = nullptr;
   const CrossNeighbors<D>* table_ = nullptr;
@@ -209,6 +250,69 @@ class NeighborList {
   std::vector<std::vector<Real>> gradients_;
   bool gradients_cached_ = false;
 };
+
+template <int D>
+template <bool periodic, class Visit>
+void NeighborList<D>::refine_block(const NeighborList& candidates, std::size_t block, const ConstVectorView<D>& query_x,
+                                   const ConstVectorView<D>& source_x, Visit& visit) {
+  constexpr bool visits = !std::is_same_v<std::remove_const_t<Visit>, IgnorePairs>;
+  const Real support_squared = table_->support_squared_;
+  IndexArray& out = blocks_[block];
+  out.size = 0;
+  std::vector<Real> listed_r2;  // with a visitor: r² of the particle's listed pairs, in order
+  const auto [first_particle, last_particle] = particles_of_block(block);
+  for (Index i = first_particle; i < last_particle; ++i) {
+    const Vector<D> x = query_x[i];
+    const std::uint32_t* const entries = candidates.entries(i);
+    const Index total = candidates.span_[i].count;
+    const std::size_t first_entry = out.size;
+    if constexpr (visits) listed_r2.resize(std::max<std::size_t>(listed_r2.size(), total));
+    for (Index first = 0; first < total; first += 64) {
+      // The candidates' positions are gathered by index, 64 at a time, in a loop the compiler
+      // vectorises, as in fill_block.
+      const std::uint32_t* const entry = entries + first;
+      const Index count = std::min<Index>(64, total - first);
+      std::array<Real, 64> r2;
+      for (Index k = 0; k < count; ++k) {
+        const std::uint32_t j = periodic ? entry[k] & index_mask : entry[k];
+        Real sum = 0;
+        for (int d = 0; d < D; ++d) {
+          const Real x_image = periodic ? x[d] - table_->shifts_[entry[k] >> index_bits][d] : x[d];
+          const Real xij = x_image - source_x.component[d][j];
+          sum += xij * xij;
+        }
+        r2[k] = sum;
+      }
+      // About half the candidates pass, so every entry is written and only the kept ones are
+      // counted (a store per candidate), where fill_block's sparser pass decodes a bit mask:
+      // BM_NeighborRefine, 3D, 10^5 particles, 1 thread: 12.8 ms with the mask, 10.0 ms so.
+      out.reserve_more(count);
+      std::uint32_t* const at = out.data.get() + out.size;
+      Real* const at_r2 = visits ? listed_r2.data() + (out.size - first_entry) : nullptr;
+      std::size_t kept = 0;
+      for (Index k = 0; k < count; ++k) {
+        at[kept] = entry[k];
+        if constexpr (visits) at_r2[kept] = r2[k];
+        kept += r2[k] < support_squared ? 1 : 0;
+      }
+      out.size += kept;
+    }
+    span_[i] = {static_cast<std::uint32_t>(first_entry), static_cast<std::uint32_t>(out.size - first_entry)};
+    if constexpr (visits) {
+      const std::uint32_t* const listed = out.data.get() + first_entry;
+      const int listed_count = static_cast<int>(span_[i].count);
+      visit(std::size_t(i), [&](auto&& f) {
+        NeighborRun<D> run;
+        for (int first = 0; first < listed_count; first += NeighborRun<D>::capacity) {
+          run.count = std::min(NeighborRun<D>::capacity, listed_count - first);
+          set_indices(run, listed + first, periodic);
+          std::copy_n(listed_r2.data() + first, run.count, run.r2.begin());
+          f(std::as_const(run));
+        }
+      });
+    }
+  }
+}
 
 extern template class NeighborList<2>;
 extern template class NeighborList<3>;

@@ -40,11 +40,16 @@ class FluidWallNeighbors {
     arena_.release();
   }
 
+  /// When update_fluid lists the fluid–fluid and fluid → wall pairs: at once, or (with a skin)
+  /// in the next walk_fluid_pairs, which then refines the candidates and hands out the pairs in
+  /// one walk. No other walk may run between that update and that walk_fluid_pairs.
+  enum class Listing { now, in_next_pair_walk };
+
   /// Re-sorts the fluid, relinks it with the walls (`walls` as last passed to set_walls) and
-  /// lists the neighbours (see the class for what a skin changes); returns the particles
-  /// removed. The passes' positions must stay those of this call until the next one. The sort
-  /// and reorder workspace lives in an arena kept from step to step.
-  std::size_t update_fluid(ParticleSet<D>& fluid, const ParticleSet<D>& walls) {
+  /// lists the neighbours (see the class for what a skin changes, and Listing); returns the
+  /// particles removed. The passes' positions must stay those of this call until the next one.
+  /// The sort and reorder workspace lives in an arena kept from step to step.
+  std::size_t update_fluid(ParticleSet<D>& fluid, const ParticleSet<D>& walls, Listing listing = Listing::now) {
     const bool skin = fluid_grid_.skin() > 0;
     std::size_t removed = 0;
     const auto fluid_x = std::as_const(fluid)[fluid.position()];
@@ -64,12 +69,33 @@ class FluidWallNeighbors {
         });
       }
     }
-    if (skin) {
+    listing_pending_ = skin && listing == Listing::in_next_pair_walk;
+    if (skin && !listing_pending_) {
       fluid_list_.refine(fluid_candidates_, fluid_x, fluid_x);
       fluid_to_walls_list_.refine(fluid_to_walls_candidates_, fluid_x, wall_x);
-      walls_to_fluid_list_.refine(walls_to_fluid_candidates_, wall_x, fluid_x);
     }
+    if (skin) walls_to_fluid_list_.refine(walls_to_fluid_candidates_, wall_x, fluid_x);
     return removed;
+  }
+
+  /// Calls on_fluid(i, runs) and then on_wall(i, runs) for every fluid particle i, where runs(f)
+  /// calls f(run) for the NeighborRuns of i's fluid (wall) neighbours with their indices and r²,
+  /// in the order of the other walks (x_ij and gradients are not all set). After
+  /// update_fluid(…, Listing::in_next_pair_walk) it lists those pairs as it goes, reading each
+  /// candidate's position once for the list and the pass (NeighborList::refine).
+  template <class OnFluid, class OnWall>
+  void walk_fluid_pairs(const ConstVectorView<D>& fluid_x, const ConstVectorView<D>& wall_x, OnFluid&& on_fluid,
+                        OnWall&& on_wall) {
+    if (listing_pending_) {
+      fluid_list_.refine(fluid_candidates_, fluid_x, fluid_x, on_fluid);
+      fluid_to_walls_list_.refine(fluid_to_walls_candidates_, fluid_x, wall_x, on_wall);
+      listing_pending_ = false;
+      return;
+    }
+    for_each_particle(fluid_grid_.particle_count(), [&](std::size_t i) {
+      on_fluid(i, [&](auto&& f) { fluid_list_.for_each_run(i, fluid_x, fluid_x, f); });
+      on_wall(i, [&](auto&& f) { fluid_to_walls_list_.for_each_run(i, fluid_x, wall_x, f); });
+    });
   }
 
   /// Caches `kernel`'s gradient ∇W of every fluid–fluid and fluid → wall pair at the positions
@@ -89,6 +115,9 @@ class FluidWallNeighbors {
     arena_.reset(ScratchArena::aligned(count * sizeof(Real)));
     return arena_.take<Real>(count);
   }
+
+  /// Whether the last update left the fluid–fluid and fluid → wall lists to walk_fluid_pairs.
+  bool listing_pending() const { return listing_pending_; }
 
   /// Fluid updates that re-sorted the fluid and rebuilt the lists, the first included.
   std::size_t builds() const { return builds_; }
@@ -163,6 +192,7 @@ class FluidWallNeighbors {
   NeighborList<D> walls_to_fluid_list_;
   std::vector<Real> built_x_;  // with a skin: the fluid's positions at the last build, by component
   std::size_t builds_ = 0;
+  bool listing_pending_ = false;  // update_fluid left the fluid and fluid → wall lists to walk_fluid_pairs
 };
 
 template <int D>

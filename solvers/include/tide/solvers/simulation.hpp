@@ -19,7 +19,7 @@ namespace tide {
 
 /// Wall-clock seconds spent in each part of the step, summed since construction.
 struct PassTimes {
-  double neighbor_search = 0;  // sort, reorder, cell tables
+  double neighbor_search = 0;  // sort, reorder, cell tables, lists (and a density pass that lists them)
   double density = 0;          // summation (with EOS) or continuity update and EOS; incompressible: also α
   double wall_state = 0;       // wall pressure, density and velocity extrapolation
   double momentum = 0;         // pressure, viscous and body forces (incompressible: viscous and body forces)

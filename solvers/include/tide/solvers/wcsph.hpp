@@ -72,6 +72,8 @@ class Wcsph final : public Simulation<D> {
 
  private:
   void set_hydrostatic_density();
+  /// How neighbors_ lists the pairs after an update: by the density pass where it can.
+  typename FluidWallNeighbors<D>::Listing listing() const;
   void compute_interactions(const Vector<D>& gravity);
   void add_surface_tension();
   void build_pipeline();
