@@ -96,19 +96,33 @@ void NeighborList<D>::fill_block(std::size_t first_cell, std::size_t last_cell, 
         const Vector<D> x_image = x - table.shifts_[range.shift];
         const std::uint32_t shift = periodic ? std::uint32_t(range.shift) << index_bits : 0;
         for (Index first = range.begin; first < range.end; first += 64) {
-          // Up to 64 candidates, one bit each, in a loop the compiler vectorises over the SoA
-          // positions (most candidates fail the test, unpredictably).
+          // Up to 64 candidates in a loop the compiler vectorises over the SoA positions (most
+          // fail the test, unpredictably): with AVX-512 their r² and entries, compacted as a
+          // refinement does (keep_inside); otherwise one bit each, the mask then decoded.
           const Index count = std::min<Index>(64, range.end - first);
           std::array<const Real*, D> source;
           for (int d = 0; d < D; ++d) source[d] = source_x.component[d] + first;
-          std::uint64_t mask = 0;
-          for (Index k = 0; k < count; ++k) {
+          const auto squared_distance = [&](Index k) {
             Vector<D> xij;
             for (int d = 0; d < D; ++d) xij[d] = x_image[d] - source[d][k];
-            mask |= squared_norm<D>(xij) < list_radius_squared ? bit[k] : 0;
-          }
+            return squared_norm<D>(xij);
+          };
           const std::uint32_t base = shift | first;
-          append_set_bits(mask, out, [&](int k) { return base + static_cast<std::uint32_t>(k); });
+          if constexpr (keep_inside_is_vectorised) {
+            std::array<Real, 64> r2;
+            std::array<std::uint32_t, 64> entry;
+            for (Index k = 0; k < count; ++k) {
+              r2[k] = squared_distance(k);
+              entry[k] = base + k;
+            }
+            out.reserve_more(64);
+            out.size += keep_inside<false>(entry.data(), r2.data(), static_cast<int>(count), list_radius_squared,
+                                           out.data.get() + out.size, nullptr);
+          } else {
+            std::uint64_t mask = 0;
+            for (Index k = 0; k < count; ++k) mask |= squared_distance(k) < list_radius_squared ? bit[k] : 0;
+            append_set_bits(mask, out, [&](int k) { return base + static_cast<std::uint32_t>(k); });
+          }
         }
       }
       span_[i] = {static_cast<std::uint32_t>(first_entry), static_cast<std::uint32_t>(out.size - first_entry)};

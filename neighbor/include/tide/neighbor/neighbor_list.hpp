@@ -15,6 +15,7 @@
 #include "tide/core/parallel.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/types.hpp"
+#include "tide/neighbor/keep_inside.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/neighbor/neighbor_run.hpp"
 
@@ -31,7 +32,8 @@ namespace tide {
 /// The candidates of a cell's merged ranges (~216 for ~29 neighbours in 3D with cells of one
 /// support radius) are tested 64 at a time in a loop the compiler vectorises (a compare and an
 /// OR into a bit mask, no branch), and each mask is decoded at once into 4-byte indices (CSR, as
-/// in Cabana). The indices of a block of cells are written by one task into the block's own
+/// in Cabana); built for AVX-512, the tested candidates are compacted by a compress instead
+/// (keep_inside). The indices of a block of cells are written by one task into the block's own
 /// array, so no task needs another's counts first. A list of bits per candidate (1 bit per
 /// candidate against 32 per neighbour) cost the passes a mispredicted branch per range and word,
 /// which kept their pair loops from overlapping and vectorising (docs/performance.md).
@@ -266,7 +268,8 @@ void NeighborList<D>::refine_block(const NeighborList& candidates, std::size_t b
     const std::uint32_t* const entries = candidates.entries(i);
     const Index total = candidates.span_[i].count;
     const std::size_t first_entry = out.size;
-    if constexpr (visits) listed_r2.resize(std::max<std::size_t>(listed_r2.size(), total));
+    // keep_inside may write up to 64 values past a chunk's first kept one.
+    if constexpr (visits) listed_r2.resize(std::max<std::size_t>(listed_r2.size(), total + 64));
     for (Index first = 0; first < total; first += 64) {
       // The candidates' positions are gathered by index, 64 at a time, in a loop the compiler
       // vectorises, as in fill_block.
@@ -283,19 +286,13 @@ void NeighborList<D>::refine_block(const NeighborList& candidates, std::size_t b
         }
         r2[k] = sum;
       }
-      // About half the candidates pass, so every entry is written and only the kept ones are
-      // counted (a store per candidate), where fill_block's sparser pass decodes a bit mask:
-      // BM_NeighborRefine, 3D, 10^5 particles, 1 thread: 12.8 ms with the mask, 10.0 ms so.
-      out.reserve_more(count);
-      std::uint32_t* const at = out.data.get() + out.size;
+      // About half the candidates pass, so they are compacted (keep_inside) where fill_block's
+      // sparser pass decodes a bit mask: BM_NeighborRefine, 3D, 10^5 particles, 1 thread:
+      // 12.8 ms with the mask, 10.0 ms with a store per candidate and a counted keep.
+      out.reserve_more(64);
       Real* const at_r2 = visits ? listed_r2.data() + (out.size - first_entry) : nullptr;
-      std::size_t kept = 0;
-      for (Index k = 0; k < count; ++k) {
-        at[kept] = entry[k];
-        if constexpr (visits) at_r2[kept] = r2[k];
-        kept += r2[k] < support_squared ? 1 : 0;
-      }
-      out.size += kept;
+      out.size += keep_inside<visits>(entry, r2.data(), static_cast<int>(count), support_squared,
+                                      out.data.get() + out.size, at_r2);
     }
     span_[i] = {static_cast<std::uint32_t>(first_entry), static_cast<std::uint32_t>(out.size - first_entry)};
     if constexpr (visits) {
