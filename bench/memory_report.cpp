@@ -4,12 +4,15 @@
 // peak while the scene is built and the peak of the steps after the warm-up).
 //
 //   memory_report [--dimension 2|3] [--particles N] [--scheme wcsph|dfsph|iisph] [--steps K]
-//                 [--json FILE] [--allocator-default]
+//                 [--skin S] [--json FILE] [--allocator-default]
 //
 // Defaults: 3D, 10^6 particles, WCSPH, 25 steps (step_bench's 20 warm-up steps and 5 timed
-// ones). The table is Markdown; --json also writes the figures for scripts/performance_report.py.
-// Like the `tide` app, it first calls release_large_blocks_to_the_system(); --allocator-default
-// leaves the C allocator as it is, to see what that costs in resident memory.
+// ones), the scheme's default neighbour skin; --skin sets solver.neighbor_skin in particle
+// spacings (0: no candidate lists, the lists rebuilt every step, as in step_bench's BM_Step
+// rows). The table is Markdown; --json also writes the figures for
+// scripts/performance_report.py. Like the `tide` app, it first calls
+// release_large_blocks_to_the_system(); --allocator-default leaves the C allocator as it is, to
+// see what that costs in resident memory.
 
 #include <cstddef>
 #include <cstdio>
@@ -17,6 +20,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -39,6 +43,7 @@ struct Options {
   std::size_t particles = 1'000'000;
   scene::Scheme scheme = scene::Scheme::wcsph;
   int steps = 25;
+  std::optional<double> skin;  // solver.neighbor_skin; unset: the scheme's default
   std::string json;
   bool allocator_default = false;  // leave the allocator's large-block threshold as it is
 };
@@ -47,6 +52,18 @@ scene::Scheme parse_scheme(std::string_view name) {
   for (scene::Scheme scheme : {scene::Scheme::wcsph, scene::Scheme::dfsph, scene::Scheme::iisph})
     if (tide::scheme_name(scheme) == name) return scheme;
   throw std::invalid_argument("unknown scheme '" + std::string(name) + "'");
+}
+
+// The whole of `value` as a number (std::stod, std::stoi, ...), or an error that names the option.
+template <class Parse>
+auto number(std::string_view flag, const std::string& value, Parse parse) {
+  std::size_t used = 0;
+  try {
+    const auto parsed = parse(value, &used);
+    if (used == value.size()) return parsed;
+  } catch (const std::logic_error&) {
+  }
+  throw std::invalid_argument(std::string(flag) + " expects a number, got '" + value + "'");
 }
 
 Options parse(int argc, char** argv) {
@@ -60,13 +77,20 @@ Options parse(int argc, char** argv) {
     if (k + 1 >= argc) throw std::invalid_argument("missing value after " + std::string(flag));
     const std::string value = argv[++k];
     if (flag == "--dimension") {
-      options.dimension = std::stoi(value);
+      options.dimension =
+          number(flag, value, [](const std::string& v, std::size_t* used) { return std::stoi(v, used); });
     } else if (flag == "--particles") {
-      options.particles = std::stoul(value);
+      const long long particles =
+          number(flag, value, [](const std::string& v, std::size_t* used) { return std::stoll(v, used); });
+      if (particles < 1) throw std::invalid_argument("--particles is a count >= 1");
+      options.particles = static_cast<std::size_t>(particles);
     } else if (flag == "--scheme") {
       options.scheme = parse_scheme(value);
     } else if (flag == "--steps") {
-      options.steps = std::stoi(value);
+      options.steps = number(flag, value, [](const std::string& v, std::size_t* used) { return std::stoi(v, used); });
+    } else if (flag == "--skin") {
+      options.skin = number(flag, value, [](const std::string& v, std::size_t* used) { return std::stod(v, used); });
+      if (!(*options.skin >= 0)) throw std::invalid_argument("--skin is a number of particle spacings >= 0");
     } else if (flag == "--json") {
       options.json = value;
     } else {
@@ -74,6 +98,7 @@ Options parse(int argc, char** argv) {
     }
   }
   if (options.dimension != 2 && options.dimension != 3) throw std::invalid_argument("--dimension is 2 or 3");
+  if (options.steps < 0) throw std::invalid_argument("--steps is a count >= 0");
   return options;
 }
 
@@ -89,14 +114,17 @@ struct Measurement {
   ResidentMemory after_steps;    // after the steps (peak: the steps', reset after the build)
   tide::bench::HeapMemory heap;  // after the steps
   bool peak_reset = false;
+  double skin = 0;  // solver.neighbor_skin in particle spacings
 };
 
 template <int D>
 Measurement measure(const Options& options) {
   Measurement m;
   m.baseline = resident_memory();
-  const std::unique_ptr<tide::Simulation<D>> simulation =
-      tide::make_simulation<D>(tide::bench::sized_dam_break(D, options.particles, options.scheme));
+  scene::Scene dam_break = tide::bench::sized_dam_break(D, options.particles, options.scheme);
+  if (options.skin) dam_break.solver.neighbor_skin = options.skin;
+  m.skin = dam_break.solver.neighbor_skin.value_or(scene::default_neighbor_skin(options.scheme));
+  const std::unique_ptr<tide::Simulation<D>> simulation = tide::make_simulation<D>(dam_break);
   m.built = resident_memory();
   m.peak_reset = tide::bench::reset_peak_resident_memory();
   for (int step = 0; step < options.steps; ++step) simulation->step();
@@ -111,10 +139,11 @@ Measurement measure(const Options& options) {
 void print(const Options& options, const Measurement& m) {
   const double n = double(m.fluid);
   const auto per = [&](double bytes) { return bytes / n; };
-  std::printf("%dD %s, %s, %zu fluid and %zu wall particles (%.2f per fluid particle), after %d steps%s\n\n",
-              options.dimension, std::string(tide::scheme_name(options.scheme)).c_str(), TIDE_REAL_NAME, m.fluid,
-              m.walls, double(m.walls) / n, options.steps,
-              options.allocator_default ? ", C allocator left as it is" : "");
+  std::printf(
+      "%dD %s, %s, %zu fluid and %zu wall particles (%.2f per fluid particle), neighbour skin %.2f spacings, after %d "
+      "steps%s\n\n",
+      options.dimension, std::string(tide::scheme_name(options.scheme)).c_str(), TIDE_REAL_NAME, m.fluid, m.walls,
+      double(m.walls) / n, m.skin, options.steps, options.allocator_default ? ", C allocator left as it is" : "");
   std::printf("| item | B per fluid particle |\n|---|--:|\n");
   std::map<std::string, double> owners;
   std::string last_owner;
