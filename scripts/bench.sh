@@ -1,6 +1,7 @@
 #!/bin/sh
 # The benchmark suite in one command: builds step_bench and neighbor_bench in double and float
-# (Release), runs them into bench/results/*.json and writes docs/performance.md from those files.
+# (Release) and memory_report in double, runs them into bench/results/*.json and writes
+# docs/performance.md from those files.
 #
 #   scripts/bench.sh             build, run everything (about an hour on 2 cores), write the page
 #   scripts/bench.sh --report    only rewrite docs/performance.md from bench/results/*.json
@@ -34,6 +35,7 @@ for real in double float; do
     -DTIDE_BUILD_APPS=OFF -DTIDE_ARCH="${TIDE_ARCH:-native}" >/dev/null
   cmake --build "$prefix-$real" -j2 --target step_bench neighbor_bench
 done
+cmake --build "$prefix-double" -j2 --target memory_report
 
 run() {  # binary, output name, extra arguments
   binary=$1
@@ -47,4 +49,7 @@ run "$prefix-double/bench/step_bench" step_bench_double
 # Float: the rows the targets quote (the reference scene and the 3D WCSPH steps).
 run "$prefix-float/bench/step_bench" step_bench_float --benchmark_filter='BM_Reference3D|BM_Step/wcsph/3D'
 run "$prefix-double/bench/neighbor_bench" neighbor_bench_double
+# Target 4's bytes per particle, with the default skin and with lists rebuilt every step.
+"$prefix-double/bench/memory_report" --particles 1000000 --json "$results/memory_report.json"
+"$prefix-double/bench/memory_report" --particles 1000000 --skin 0 --json "$results/memory_report_skin0.json"
 report

@@ -5,8 +5,10 @@ Usage: performance_report.py RESULTS_DIR OUTPUT_MD  (scripts/bench.sh calls it)
 
 Reads step_bench_double.json, step_bench_float.json, neighbor_bench_double.json and the A/B pairs
 listed in optimisations.json; every number on the page comes from those files, medians over the
-repetitions (a single run where there is only one). Draws docs/performance/*.png with matplotlib and
-appends notes.md (the analysis) and profiling.md (how to profile a scene).
+repetitions (a single run where there is only one). Draws docs/performance/*.png with matplotlib,
+puts targets_not_met.md (each target not met: its figure, the profile that explains it, what was
+tried) under the targets table and appends notes.md (the analysis) and profiling.md (how to
+profile a scene).
 """
 
 import json
@@ -118,39 +120,45 @@ def fmt_share(row, key):
     return f"{100 * row.get(key, 0):.1f}%"
 
 
-def write_memory(w, after, before):
-    """The itemised bytes per fluid particle of bench/memory_report, before and after issue 8's memory work."""
+def write_memory(w, after, before, without_skin):
+    """The itemised bytes per fluid particle of bench/memory_report: before issue 8's memory work,
+    after it (the default skin) and, if measured, after it with lists rebuilt every step (skin 0)."""
     w("## Where the bytes go\n")
     w(f"{after['dimension']}D {after['scheme'].upper()}, {after['real']}, the dam break of `step_bench` at "
       f"{after['fluid']:,} fluid and {after['walls']:,} wall particles, after {after['steps']} steps: every buffer "
       "the simulation keeps, at its capacity (`Simulation::memory_usage`), in bytes per fluid particle. "
       "Reproduce: `build/bench/memory_report --particles 1000000 --json bench/results/memory_report.json` "
       "(about a minute on 2 cores); `memory_report_before.json` is the same program on the code before the "
-      "changes below (commit f549d25, which only added the accounting).\n")
-    names = [i["name"] for i in (before or {}).get("items", [])]
-    names += [i["name"] for i in after["items"] if i["name"] not in names]
+      "changes below (commit f549d25, which only added the accounting), `memory_report_skin0.json` the "
+      "current code with `--skin 0` (`solver.neighbor_skin: 0`: no candidate lists, the fluid sorted and "
+      "its lists rebuilt every step).\n")
+    columns = [(label, report) for label, report in (("before", before), ("after", after),
+                                                      ("after, skin 0", without_skin)) if report]
+    names = []
+    for _, report in columns:
+        names += [i["name"] for i in report["items"] if i["name"] not in names]
     value = lambda report, name: next((i["bytes_per_particle"] for i in report["items"] if i["name"] == name), None)
     cell = lambda v: "—" if v is None or v == 0 else f"{v:.1f}"
-    if before:
-        w("| item | before | after |")
-        w("|---|--:|--:|")
-    else:
-        w("| item | B per fluid particle |")
-        w("|---|--:|")
+    w("| item | " + " | ".join(label for label, _ in columns) + " |")
+    w("|---|" + "--:|" * len(columns))
     for name in names:
-        a = value(after, name)
-        b = value(before, name) if before else None
-        if not a and not b:
-            continue
-        w(f"| {name} | {cell(b)} | {cell(a)} |" if before else f"| {name} | {cell(a)} |")
-    total = f"**{after['bytes_per_particle']:.1f}**"
-    w(f"| **total held** | **{before['bytes_per_particle']:.1f}** | {total} |" if before else f"| **total held** | {total} |")
-    rss = lambda r, key: f"{r[key]:.1f}" if r and key in r else ""
+        values = [value(report, name) for _, report in columns]
+        if any(values):
+            w(f"| {name} | " + " | ".join(cell(v) for v in values) + " |")
+    w("| **total held** | " + " | ".join(f"**{r['bytes_per_particle']:.1f}**" for _, r in columns) + " |")
     for label, key in (("resident after the steps (VmRSS)", "rss_after_steps"),
                        ("resident peak of the steps (VmHWM, reset after the build)", "rss_peak_steps"),
                        ("freed, kept by the C allocator", "heap_free_kept")):
-        w(f"| {label} | {rss(before, key)} | {rss(after, key)} |" if before else f"| {label} | {rss(after, key)} |")
+        w(f"| {label} | " + " | ".join(f"{r[key]:.1f}" if key in r else "" for _, r in columns) + " |")
     w("")
+
+
+def include(w, results_dir, page):
+    """Appends a hand-written page of bench/results/, if it exists."""
+    path = os.path.join(results_dir, page)
+    if os.path.exists(path):
+        with open(path) as f:
+            w(f.read())
 
 
 def main():
@@ -160,6 +168,7 @@ def main():
     neighbor, _ = load(os.path.join(results_dir, "neighbor_bench_double.json"))
     memory = load_memory(results_dir, "memory_report.json")
     memory_before = load_memory(results_dir, "memory_report_before.json")
+    memory_without_skin = load_memory(results_dir, "memory_report_skin0.json")
     figures = os.path.join(os.path.dirname(output), "performance")
     os.makedirs(figures, exist_ok=True)
     out = []
@@ -245,6 +254,7 @@ def main():
     w("| 6 | each optional feature: its cost when on, nothing when off | see [Features](#features) | | "
       "see there | `step_bench --benchmark_filter=BM_Feature` |")
     w("")
+    include(w, results_dir, "targets_not_met.md")  # hand-written: each target not met, why, what was tried
 
     # ---- Throughput plot ------------------------------------------------------------------
     w("## Particle-steps per second against particle count\n")
@@ -305,7 +315,7 @@ def main():
 
     # ---- Memory ---------------------------------------------------------------------------
     if memory:
-        write_memory(w, memory, memory_before)
+        write_memory(w, memory, memory_before, memory_without_skin)
 
     # ---- Features ---------------------------------------------------------------------------
     feats = {}
@@ -384,10 +394,7 @@ def main():
         w("")
 
     for page in ("notes.md", "profiling.md"):  # hand-written analysis and the profiling how-to
-        path = os.path.join(results_dir, page)
-        if os.path.exists(path):
-            with open(path) as f:
-                w(f.read())
+        include(w, results_dir, page)
 
     with open(output, "w") as f:
         f.write("\n".join(out) + "\n")
