@@ -88,7 +88,8 @@ def mega(x):
 
 
 def status(ok):
-    return "**met**" if ok else "not met"
+    """A target's status; one not met links to its figure, profile and what was tried."""
+    return "**met**" if ok else "not met ([why](#the-targets-not-met-figure-profile-what-was-tried))"
 
 
 def rate_with_range(row):
