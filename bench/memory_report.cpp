@@ -173,8 +173,9 @@ void write_json(const Options& options, const Measurement& m) {
   const auto above = [&](std::size_t bytes) { return (double(bytes) - double(m.baseline.current)) / n; };
   out << "{\n  \"dimension\": " << options.dimension << ",\n  \"scheme\": \"" << tide::scheme_name(options.scheme)
       << "\",\n  \"allocator_default\": " << (options.allocator_default ? "true" : "false") << ",\n  \"real\": \""
-      << TIDE_REAL_NAME << "\",\n  \"steps\": " << options.steps << ",\n  \"fluid\": " << m.fluid
-      << ",\n  \"walls\": " << m.walls << ",\n  \"bytes_per_particle\": " << double(m.usage.total()) / n
+      << TIDE_REAL_NAME << "\",\n  \"steps\": " << options.steps << ",\n  \"skin\": " << m.skin
+      << ",\n  \"fluid\": " << m.fluid << ",\n  \"walls\": " << m.walls
+      << ",\n  \"bytes_per_particle\": " << double(m.usage.total()) / n
       << ",\n  \"rss_after_build\": " << above(m.built.current) << ",\n  \"rss_peak_build\": " << above(m.built.peak)
       << ",\n  \"rss_after_steps\": " << above(m.after_steps.current)
       << ",\n  \"rss_peak_steps\": " << above(m.after_steps.peak)
