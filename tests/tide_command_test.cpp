@@ -4,8 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "run_command.hpp"
 #include "tide/io/frame_writer.hpp"
 
 namespace tide {
@@ -21,22 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // standard output and standard error together
-};
+using testing_support::CommandResult;
 
-CommandResult run_tide(const std::string& arguments) {
-  const std::string command = std::string(TIDE_COMMAND) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) result.output += buffer;
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+CommandResult run_tide(const std::string& arguments) { return testing_support::run_command(TIDE_COMMAND, arguments); }
 
 class TideCommand : public testing::Test {
  protected:
