@@ -163,8 +163,9 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   const std::size_t particles = simulation->fluid().size();
   if (!options.quiet) {
     std::cout << "tide: running " << scene.source << " (" << scheme_name(scene.solver.scheme) << ", " << D << "D, "
-              << particles << " fluid and " << simulation->walls().size() << " wall particles) until t = " << end_time
-              << " s; frames every " << interval << " s into " << output_directory.string() << '\n';
+              << particles << " fluid and " << simulation->interactions().contact_particle_count()
+              << " wall particles) until t = " << end_time << " s; frames every " << interval << " s into "
+              << output_directory.string() << '\n';
   }
   const bool terminal = isatty(fileno(stdout)) != 0;
   Progress progress(std::cout, terminal, options.quiet, scene.time.start, end_time, particles);
@@ -214,7 +215,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   const double rate = static_cast<double>(particles) * static_cast<double>(simulation->step_count()) / wall;
   std::printf("run summary: %s\n", scene.source.c_str());
   std::printf("  particles   %zu fluid, %zu wall, %zu removed (left the domain)\n", particles,
-              simulation->walls().size(), simulation->removed_total());
+              simulation->interactions().contact_particle_count(), simulation->removed_total());
   std::printf("  steps       %llu, simulated %.4g s\n", static_cast<unsigned long long>(simulation->step_count()),
               simulation->time() - scene.time.start);
   std::printf("  wall time   %.2f s, %.3g M particle-steps/s (fluid particles x steps / wall time)\n", wall,
@@ -282,7 +283,8 @@ int check_scene(const std::filesystem::path& scene_file) {
   try {
     auto report = [&](const auto& simulation) {
       std::cout << scene_file.string() << ": ok: " << scheme_name(scene->solver.scheme) << ", " << scene->dimension
-                << "D, " << simulation.fluid().size() << " fluid and " << simulation.walls().size()
+                << "D, " << simulation.fluid().size() << " fluid and "
+                << simulation.interactions().contact_particle_count()
                 << " wall particles, h = " << simulation.smoothing_length() << " m, t = " << scene->time.start << " to "
                 << scene->time.end << " s\n";
     };

@@ -102,7 +102,7 @@ Options parse(int argc, char** argv) {
   return options;
 }
 
-// The owner of an item: what precedes its first '.' ("fluid", "wall grid", "fluid list", ...).
+// The owner of an item: what precedes its first '.' ("fluid", "walls grid", "fluid list", ...).
 std::string owner(const std::string& name) { return name.substr(0, name.find('.')); }
 
 struct Measurement {
@@ -132,7 +132,7 @@ Measurement measure(const Options& options) {
   m.heap = tide::bench::heap_memory();
   m.usage = simulation->memory_usage();
   m.fluid = simulation->fluid().size();
-  m.walls = simulation->walls().size();
+  m.walls = simulation->interactions().contact_particle_count();
   return m;
 }
 

@@ -103,18 +103,21 @@ double process_cpu_seconds() {
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-// Fluid-fluid plus fluid-wall pairs (i itself included) at the current positions.
+// Fluid-fluid plus fluid-contact pairs (i itself included) at the current positions.
 template <int D>
 std::size_t count_pairs(const tide::Simulation<D>& simulation) {
   const tide::ConstVectorView<D> x = simulation.fluid()[simulation.fluid_fields().position];
-  const tide::ConstVectorView<D> wall_x = simulation.walls()[simulation.wall_fields().position];
+  const tide::Interactions<D>& interactions = simulation.interactions();
   return tide::reduce(
       simulation.fluid().size(), std::size_t(0),
       [&](std::size_t i) {
         std::size_t count = 0;
         const auto add = [&](tide::Index, const tide::Vector<D>&, Real) { ++count; };
-        simulation.fluid_grid().for_each_neighbor(i, x, add);
-        simulation.wall_grid().for_each_neighbor_of(x[i], wall_x, add);
+        interactions.fluid_grid().for_each_neighbor(i, x, add);
+        for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+          const tide::Contact<D>& contact = interactions.contact(k);
+          contact.grid().for_each_neighbor_of(x[i], contact.positions(), add);
+        }
         return count;
       },
       [](std::size_t a, std::size_t b) { return a + b; });
@@ -162,10 +165,10 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads, dou
     const tide::MemoryUsage usage = simulation.memory_usage();
     for (const tide::MemoryItem& item : usage.items()) {
       const auto starts = [&](const char* prefix) { return item.name.rfind(prefix, 0) == 0; };
-      double& part = starts("fluid.")                                ? fluid_fields
-                     : starts("walls.")                              ? wall_fields
-                     : starts("fluid grid.") || starts("wall grid.") ? grids
-                                                                     : rest;
+      double& part = starts("fluid.")                                 ? fluid_fields
+                     : starts("walls.")                               ? wall_fields
+                     : starts("fluid grid.") || starts("walls grid.") ? grids
+                                                                      : rest;
       part += double(item.bytes);
     }
     state.counters["B_fluid"] = Counter(fluid_fields / fluid);
@@ -193,7 +196,7 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads, dou
     state.counters["neighbors"] = Counter(pairs / fluid);
     state.counters["builds/step"] = Counter(double(simulation.neighbor_builds() - builds_before) / steps);
     state.counters["fluid"] = Counter(fluid);
-    state.counters["walls/fluid"] = Counter(double(simulation.walls().size()) / fluid);
+    state.counters["walls/fluid"] = Counter(double(simulation.interactions().contact_particle_count()) / fluid);
     state.counters["threads"] = Counter(double(tide::thread_count()));
     state.counters["cpu_util"] = Counter(cpu_seconds / (wall_seconds * threads));
   } catch (const std::exception& error) {

@@ -682,7 +682,7 @@ class SceneParser {
   }
 
   scene::Obstacle read_obstacle(const Node& node) const {
-    expect_object(node, {"box", "ball", "plane", "velocity"});
+    expect_object(node, {"box", "ball", "plane", "velocity", "slip"});
     scene::Obstacle obstacle;
     const std::string_view shape = shape_key(node, {"box", "ball", "plane"});
     if (shape == "box") {
@@ -693,6 +693,7 @@ class SceneParser {
       obstacle.shape = read_plane(child(node, shape));
     }
     read_optional(node, "velocity", obstacle.velocity);
+    if (const Node slip = child(node, "slip"); slip.present()) obstacle.slip = choice(slip, wall_slip_names);
     return obstacle;
   }
 

@@ -89,8 +89,8 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
       reference_sound_speed_(setup::reference_sound_speed(setup::reference_material(scene))),
       kinematic_viscosity_(static_cast<Real>(setup::reference_material(scene).kinematic_viscosity)),
       gravity_(setup::gravity_at<D>(scene, scene.time.start)),
-      neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
-                 setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
+      interactions_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
+                    setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
   if (!(reference_sound_speed_ > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   if (scene.domain.inflow) throw std::invalid_argument(scene.source + ": a domain inflow needs the wcsph scheme");
@@ -109,7 +109,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   solve_fields_ = {fluid_.add_scalar("pressure_factor"), fluid_.add_vector("predicted_velocity"),
                    fluid_.add_scalar("density_excess"), ScalarField{}};
   if (scheme_.divergence_solve) solve_fields_.divergence_pressure = fluid_.add_scalar("divergence_pressure");
-  walls_ = setup::make_walls<D>(scene, particle_mass, rest_density_, wall_fields_);
+  setup::add_wall_contacts<D>(scene, particle_mass, rest_density_, interactions_);
   // The first solve starts from the pressure of the fluid at rest: a Jacobi sweep carries
   // information about one kernel support, so from zero a deep column would need of the order of
   // (depth / h)² sweeps to take its own weight.
@@ -142,8 +142,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
   time_ = scene.time.start;
 
-  neighbors_.set_walls(walls_);
-  neighbors_.update_fluid(fluid_, walls_);
+  interactions_.update(fluid_);
   compute_density_and_factor();
   compute_non_pressure_acceleration();
   check_state();
@@ -161,19 +160,19 @@ template <int D>
 void IncompressibleSph<D>::compute_density_and_factor() {
   std::visit(
       [&](const auto& kernel) {
-        neighbors_.cache_gradients(kernel, std::as_const(fluid_)[fluid_fields_.position],
-                                   std::as_const(walls_)[wall_fields_.position]);
-        uniform_masses_ = !phases_ && passes::masses_are_uniform(std::as_const(fluid_)[fluid_fields_.mass]) &&
-                          passes::masses_are_uniform(std::as_const(walls_)[wall_fields_.mass]);
+        interactions_.cache_gradients(kernel, std::as_const(fluid_)[fluid_fields_.position]);
+        uniform_masses_ = !phases_ && passes::masses_are_uniform(std::as_const(fluid_)[fluid_fields_.mass]);
+        for (std::size_t k = 0; k < interactions_.contact_count(); ++k) {
+          const Contact<D>& contact = interactions_.contact(k);
+          uniform_masses_ = uniform_masses_ && passes::masses_are_uniform(contact.particles()[contact.fields().mass]);
+        }
         const auto nothing_more = [](std::size_t, Real) {};
         if (phases_) {
-          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
-                                             nothing_more);
-          passes::pressure_factor<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, neighbors_, walls_,
-                                           wall_fields_);
+          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, interactions_, nothing_more);
+          passes::pressure_factor<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, interactions_);
         } else {
-          passes::density_summation<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_, nothing_more);
-          passes::pressure_factor<D>(kernel, fluid_, fluid_fields_, solve_fields_, neighbors_, walls_, wall_fields_);
+          passes::density_summation<D>(kernel, fluid_, fluid_fields_, interactions_, nothing_more);
+          passes::pressure_factor<D>(kernel, fluid_, fluid_fields_, solve_fields_, interactions_);
         }
       },
       kernel_);
@@ -188,17 +187,15 @@ void IncompressibleSph<D>::compute_non_pressure_acceleration() {
   passes::MultiphaseTerms multiphase;
   if (phases_) {
     for (const Phase& p : phases_->table) dynamic_viscosity.push_back(p.dynamic_viscosity);
-    multiphase = {phase, dynamic_viscosity, walls_.empty() ? Real(0) : walls_[wall_fields_.mass][0] / rest_density_};
+    multiphase = {phase, dynamic_viscosity, setup::wall_volume<D>(interactions_, rest_density_)};
   }
   auto clock = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& kernel) {
-        if (viscosity.walls_viscous) {
-          passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, nullptr);
-          lap(clock, pass_times_.wall_state);
-        }
-        passes::fluid_acceleration<D, false>(kernel, viscosity, {}, fluid_, fluid_fields_, neighbors_, walls_,
-                                             wall_fields_, gravity_, {}, phases_ ? &multiphase : nullptr);
+        passes::wall_states<D>(kernel, interactions_, fluid_, fluid_fields_, nullptr);
+        lap(clock, pass_times_.wall_state);
+        passes::fluid_acceleration<D, false>(kernel, viscosity, {}, fluid_, fluid_fields_, interactions_, gravity_, {},
+                                             phases_ ? &multiphase : nullptr);
         lap(clock, pass_times_.momentum);
       },
       kernel_);
@@ -250,11 +247,11 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
     FluidFields<D> moving = fluid_fields_;
     moving.velocity = velocity;
     if (phases_) {
-      passes::continuity<D, true>(kernel, fluid_, moving, neighbors_, walls_, wall_fields_, nullptr);
+      passes::continuity<D, true>(kernel, fluid_, moving, interactions_, nullptr);
     } else if (uniform_masses_) {
-      passes::continuity<D, false, true>(kernel, fluid_, moving, neighbors_, walls_, wall_fields_, nullptr);
+      passes::continuity<D, false, true>(kernel, fluid_, moving, interactions_, nullptr);
     } else {
-      passes::continuity<D>(kernel, fluid_, moving, neighbors_, walls_, wall_fields_, nullptr);
+      passes::continuity<D>(kernel, fluid_, moving, interactions_, nullptr);
     }
     for_each_particle(fluid_.size(), [&](std::size_t i) {
       excess[i] = (density_target ? density[i] - rest_density_at(i) : Real(0)) + dt * rate[i];
@@ -293,16 +290,16 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
         FluidFields<D> solved = fluid_fields_;
         solved.pressure = pressure_field;
         while (true) {
-          passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, solved, neighbors_, &wall_rule);
+          passes::wall_states<D>(kernel, interactions_, fluid_, solved, &wall_rule);
           if (phases_) {
-            passes::pressure_velocity<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, neighbors_,
-                                               walls_, wall_fields_, dt, pressure_term_);
+            passes::pressure_velocity<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, interactions_,
+                                               dt, pressure_term_);
           } else if (uniform_masses_) {
             passes::pressure_velocity<D, false, true>(kernel, fluid_, fluid_fields_, solve_fields_, pressure,
-                                                      neighbors_, walls_, wall_fields_, dt, pressure_term_);
+                                                      interactions_, dt, pressure_term_);
           } else {
-            passes::pressure_velocity<D>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, neighbors_, walls_,
-                                         wall_fields_, dt, pressure_term_);
+            passes::pressure_velocity<D>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, interactions_, dt,
+                                         pressure_term_);
           }
           measure(kernel, fluid_fields_.velocity, false);
           if ((report.converged && report.iterations >= min_iterations) || report.iterations >= max_iterations) break;
@@ -387,12 +384,12 @@ StepReport IncompressibleSph<D>::step() {
     std::visit(
         [&](const auto& kernel) {
           passes::shift_particles<D>(kernel, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_,
-                                     dt, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_);
+                                     dt, fluid_, fluid_fields_, interactions_);
         },
         kernel_);
     lap(clock, pass_times_.shifting);
   }
-  report.removed = neighbors_.update_fluid(fluid_, walls_);
+  report.removed = interactions_.update(fluid_);
   lap(clock, pass_times_.neighbor_search);
   compute_density_and_factor();
   lap(clock, pass_times_.density);
@@ -461,7 +458,7 @@ template <int D>
 double IncompressibleSph<D>::bytes_per_particle() const {
   const std::size_t scratch_entries = before_sweep_.capacity() + pressure_term_.capacity();
   const double scratch = fluid_.size() > 0 ? double(sizeof(Real) * scratch_entries) / fluid_.size() : 0;
-  return setup::bytes_per_particle<D>(fluid_, walls_, neighbors_) + scratch;
+  return setup::bytes_per_particle<D>(fluid_, interactions_) + scratch;
 }
 
 template class IncompressibleSph<2>;

@@ -168,6 +168,7 @@ ParticleSamples<D> sample_walls(const scene::Scene& scene) {
       if (inside_box<D>(p, container->inner)) return;
       samples.positions.push_back(p);
       samples.velocities.push_back(Vector<D>::Zero());
+      samples.makers.push_back(0);
     });
   }
   const auto& obstacles = scene.walls.obstacles;
@@ -185,6 +186,7 @@ ParticleSamples<D> sample_walls(const scene::Scene& scene) {
       }
       samples.positions.push_back(p);
       samples.velocities.push_back(to_vector<D>(obstacles[k].velocity));
+      samples.makers.push_back(k + 1);
     });
   }
   return samples;

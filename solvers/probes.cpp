@@ -65,13 +65,19 @@ Real fluid_colour(const Simulation<D>& simulation, const Vector<D>& point) {
       [&](const auto& kernel) {
         const auto& fluid = simulation.fluid();
         const auto& f = simulation.fluid_fields();
+        const Interactions<D>& interactions = simulation.interactions();
         const Real fluid_share =
-            mass_kernel_sum<D>(kernel, simulation.fluid_grid(), fluid, fluid[f.position], f.mass, point) / rest_density;
+            mass_kernel_sum<D>(kernel, interactions.fluid_grid(), fluid, fluid[f.position], f.mass, point) /
+            rest_density;
         if (fluid_share == 0) return Real(0);
-        const auto& walls = simulation.walls();
-        const auto& w = simulation.wall_fields();
-        const Real wall_share =
-            mass_kernel_sum<D>(kernel, simulation.wall_grid(), walls, walls[w.position], w.mass, point) / rest_density;
+        Real wall_share = 0;
+        for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+          const Contact<D>& contact = interactions.contact(k);
+          if (contact.role() != ContactRole::wall) continue;
+          wall_share += mass_kernel_sum<D>(kernel, contact.grid(), contact.particles(), contact.positions(),
+                                           contact.fields().mass, point) /
+                        rest_density;
+        }
         const Real open_share = 1 - wall_share;
         // A point deep inside a wall has no open volume: it holds no fluid.
         return open_share > 0 ? fluid_share / open_share : Real(0);
@@ -83,7 +89,7 @@ template <int D>
 Real probe_water_height(const Simulation<D>& simulation, const Vector<D>& base) {
   const Vector<D> up = up_direction<D>(simulation.scene());
   const Real step = simulation.smoothing_length() / 4;
-  const Real length = length_inside<D>(simulation.fluid_grid().domain(), base, up);
+  const Real length = length_inside<D>(simulation.interactions().fluid_grid().domain(), base, up);
   const auto top_sample = static_cast<long long>(std::floor(length / step));
   Real colour_above = 0;
   for (long long k = top_sample; k >= 0; --k) {

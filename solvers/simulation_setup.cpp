@@ -37,11 +37,41 @@ ParticleSet<D> make_particles(const ParticleSamples<D>& samples, Real mass, cons
   return set;
 }
 
+// The slip of the wall that made a wall sample (ParticleSamples::makers).
+scene::WallSlip slip_of(const scene::Scene& scene, std::size_t maker) {
+  if (maker == 0) return scene.walls.slip;
+  return scene.walls.obstacles[maker - 1].slip.value_or(scene.walls.slip);
+}
+
+// The wall samples whose wall has slip `slip`, in their order.
 template <int D>
-bool any_moving_wall(const scene::Scene& scene) {
-  for (const scene::Obstacle& obstacle : scene.walls.obstacles)
-    if (to_vector<D>(obstacle.velocity) != Vector<D>::Zero()) return true;
-  return false;
+ParticleSamples<D> walls_with_slip(const scene::Scene& scene, const ParticleSamples<D>& walls, scene::WallSlip slip) {
+  ParticleSamples<D> kept;
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    if (slip_of(scene, walls.makers[i]) != slip) continue;
+    kept.positions.push_back(walls.positions[i]);
+    kept.velocities.push_back(walls.velocities[i]);
+    kept.makers.push_back(walls.makers[i]);
+  }
+  return kept;
+}
+
+// The fixed wall contact of `samples` (none when empty).
+template <int D>
+void add_wall_contact(std::string name, const ParticleSamples<D>& samples, scene::WallSlip slip, Real mass,
+                      Real rest_density, Interactions<D>& interactions) {
+  if (samples.size() == 0) return;
+  const bool moving = std::any_of(samples.velocities.begin(), samples.velocities.end(),
+                                  [](const Vector<D>& v) { return v != Vector<D>::Zero(); });
+  ParticleSet<D> walls = make_particles<D>(samples, mass, moving ? "surface_velocity" : "");
+  WallFields<D> fields{
+      walls.position(), std::nullopt, walls.scalar("mass"), walls.add_scalar("density"), walls.add_scalar("pressure"),
+      std::nullopt};
+  if (slip == scene::WallSlip::no_slip) fields.velocity = walls.add_vector("velocity");
+  if (moving) fields.surface_velocity = walls.vector("surface_velocity");
+  for (Real& rho : walls[fields.density]) rho = rest_density;
+  // Wall particles may move along their surface (a conveyor, a lid) but keep their place.
+  interactions.add_contact(std::move(name), ContactRole::wall, ContactMotion::fixed, std::move(walls), fields);
 }
 
 // Σ_k W(|k| Δx) over the lattice around one particle: the summation density of a particle deep
@@ -170,16 +200,14 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
 }
 
 template <int D>
-ParticleSet<D> make_walls(const scene::Scene& scene, Real mass, Real rest_density, WallFields<D>& fields) {
-  const bool moving_walls = any_moving_wall<D>(scene);
-  ParticleSet<D> walls = make_particles<D>(sample_walls<D>(scene), mass, moving_walls ? "surface_velocity" : "");
-  fields = {
-      walls.position(), std::nullopt, walls.scalar("mass"), walls.add_scalar("density"), walls.add_scalar("pressure"),
-      std::nullopt};
-  if (scene.walls.slip == scene::WallSlip::no_slip) fields.velocity = walls.add_vector("velocity");
-  if (moving_walls) fields.surface_velocity = walls.vector("surface_velocity");
-  for (Real& rho : walls[fields.density]) rho = rest_density;
-  return walls;
+void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, Interactions<D>& interactions) {
+  const ParticleSamples<D> samples = sample_walls<D>(scene);
+  const scene::WallSlip slip = scene.walls.slip;
+  const scene::WallSlip other =
+      slip == scene::WallSlip::no_slip ? scene::WallSlip::free_slip : scene::WallSlip::no_slip;
+  add_wall_contact<D>("walls", walls_with_slip<D>(scene, samples, slip), slip, mass, rest_density, interactions);
+  add_wall_contact<D>(other == scene::WallSlip::no_slip ? "no-slip walls" : "free-slip walls",
+                      walls_with_slip<D>(scene, samples, other), other, mass, rest_density, interactions);
 }
 
 namespace {
@@ -276,7 +304,7 @@ template GridDomain<2> grid_domain<2>(const scene::Scene&);
 template Real particle_mass<2>(const scene::Scene&, const AnyKernel<2>&, Real);
 template Phases make_phases<2>(const scene::Scene&, const AnyKernel<2>&);
 template ParticleSet<2> make_fluid<2>(const scene::Scene&, Real, Real, FluidFields<2>&, const Phases*);
-template ParticleSet<2> make_walls<2>(const scene::Scene&, Real, Real, WallFields<2>&);
+template void add_wall_contacts<2>(const scene::Scene&, Real, Real, Interactions<2>&);
 template void hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, Real, std::span<Real>);
 template void layered_hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, std::span<const Real>,
                                               std::span<Real>);
@@ -285,7 +313,7 @@ template GridDomain<3> grid_domain<3>(const scene::Scene&);
 template Real particle_mass<3>(const scene::Scene&, const AnyKernel<3>&, Real);
 template Phases make_phases<3>(const scene::Scene&, const AnyKernel<3>&);
 template ParticleSet<3> make_fluid<3>(const scene::Scene&, Real, Real, FluidFields<3>&, const Phases*);
-template ParticleSet<3> make_walls<3>(const scene::Scene&, Real, Real, WallFields<3>&);
+template void add_wall_contacts<3>(const scene::Scene&, Real, Real, Interactions<3>&);
 template void hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, Real, std::span<Real>);
 template void layered_hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, std::span<const Real>,
                                               std::span<Real>);

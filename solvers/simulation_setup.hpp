@@ -13,7 +13,7 @@
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/phases.hpp"
 #include "tide/solvers/wcsph.hpp"
 
@@ -49,9 +49,23 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
                           const Phases* phases = nullptr);
 
 /// Wall particles sampled from the scene with the fields of WallFields (a velocity only for no-slip
-/// walls, a surface velocity only when some obstacle moves), density ρ0 and pressure zero.
+/// walls, a surface velocity only where some wall moves along its surface), density ρ0 and
+/// pressure zero, added to `interactions` as fixed wall contacts: "walls", those of the scene's
+/// walls.slip, and, where obstacles set the other slip, "free-slip walls" or "no-slip walls"
+/// (none where the scene has no wall of that slip).
 template <int D>
-ParticleSet<D> make_walls(const scene::Scene& scene, Real mass, Real rest_density, WallFields<D>& fields);
+void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, Interactions<D>& interactions);
+
+/// The volume of one wall particle, m_b/ρ0 (walls continue the fluid's lattice); 0 without walls.
+template <int D>
+Real wall_volume(const Interactions<D>& interactions, Real rest_density) {
+  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+    const Contact<D>& contact = interactions.contact(k);
+    if (contact.role() == ContactRole::wall && !contact.particles().empty())
+      return contact.particles()[contact.fields().mass][0] / rest_density;
+  }
+  return 0;
+}
 
 /// p_i = ρ0 |g| (top − height of i), top being the highest particle plus half a spacing (its
 /// share of the column): the pressure of the fluid at rest under `gravity` (zero without gravity).
@@ -81,24 +95,21 @@ Vector<D> hydrostatic_part(const scene::Scene& scene, Vector<D> body_force) {
   return body_force;
 }
 
-/// What a scheme keeps, item by item: fluid and wall fields (with their reorder workspace) and
-/// every neighbour structure, at the capacity of each buffer.
+/// What a scheme keeps, item by item: fluid and contact fields (with their reorder workspace)
+/// and every neighbour structure, at the capacity of each buffer.
 template <int D>
-MemoryUsage memory_usage(const ParticleSet<D>& fluid, const ParticleSet<D>& walls,
-                         const FluidWallNeighbors<D>& neighbors) {
+MemoryUsage memory_usage(const ParticleSet<D>& fluid, const Interactions<D>& interactions) {
   MemoryUsage usage;
   fluid.add_memory(usage, "fluid");
-  walls.add_memory(usage, "walls");
-  neighbors.add_memory(usage);
+  interactions.add_memory(usage);
   return usage;
 }
 
 /// Bytes per fluid particle of memory_usage.
 template <int D>
-double bytes_per_particle(const ParticleSet<D>& fluid, const ParticleSet<D>& walls,
-                          const FluidWallNeighbors<D>& neighbors) {
+double bytes_per_particle(const ParticleSet<D>& fluid, const Interactions<D>& interactions) {
   const double fluid_count = static_cast<double>(std::max<std::size_t>(fluid.size(), 1));
-  return static_cast<double>(memory_usage<D>(fluid, walls, neighbors).total()) / fluid_count;
+  return static_cast<double>(memory_usage<D>(fluid, interactions).total()) / fluid_count;
 }
 
 /// Six significant digits, for messages.

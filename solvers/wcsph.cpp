@@ -38,8 +38,8 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
            setup::reference_sound_speed(setup::reference_material(scene)),
            static_cast<Real>(scene.solver.tait_exponent), static_cast<Real>(scene.solver.background_pressure)),
       kinematic_viscosity_(static_cast<Real>(setup::reference_material(scene).kinematic_viscosity)),
-      neighbors_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
-                 setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
+      interactions_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
+                    setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
   if (!(eos_.sound_speed() > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   if (scene::fluid_material_count(scene) > 1) {
@@ -57,7 +57,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
     set_hydrostatic_density();
   }
-  walls_ = setup::make_walls<D>(scene, particle_mass, eos_.rest_density(), wall_fields_);
+  setup::add_wall_contacts<D>(scene, particle_mass, eos_.rest_density(), interactions_);
 
   time_step_rule_.smoothing_length = smoothing_length_;
   time_step_rule_.sound_speed = phases_ ? phases_->fastest_sound : eos_.sound_speed();
@@ -71,8 +71,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   time_ = scene.time.start;
 
   build_pipeline();
-  neighbors_.set_walls(walls_);
-  neighbors_.update_fluid(fluid_, walls_, listing());
+  interactions_.update(fluid_, listing());
   compute_interactions(setup::gravity_at<D>(scene_, time_));
   check_state();
 }
@@ -108,10 +107,10 @@ Vector<D> Wcsph<D>::gravity() const {
 }
 
 template <int D>
-typename FluidWallNeighbors<D>::Listing Wcsph<D>::listing() const {
+typename Interactions<D>::Listing Wcsph<D>::listing() const {
   // Summation density is the first pass to walk the pairs after an update, and needs only r²: it
   // lists them (walk_fluid_pairs).
-  using Listing = typename FluidWallNeighbors<D>::Listing;
+  using Listing = typename Interactions<D>::Listing;
   return scene_.solver.density == scene::DensityMethod::summation ? Listing::in_next_pair_walk : Listing::now;
 }
 
@@ -148,33 +147,33 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
   if (phases_) {
     for (const Phase& phase : phases_->table) dynamic_viscosity.push_back(phase.dynamic_viscosity);
     multiphase = {std::as_const(fluid_)[fluid_fields_.phase], dynamic_viscosity,
-                  walls_.empty() ? Real(0) : walls_[wall_fields_.mass][0] / eos_.rest_density()};
+                  setup::wall_volume<D>(interactions_, eos_.rest_density())};
   }
   const auto set_phase_pressure = [&, phase = multiphase.phase](std::size_t i, Real rho) {
     const Real p = phases_->table[phase[i]].eos.pressure(rho);
     pressure[i] = clamp ? std::max(p, Real(0)) : p;
   };
   // A density pass that also lists the neighbours counts as search: the two cannot be timed apart.
-  double& density_time = neighbors_.listing_pending() ? pass_times_.neighbor_search : pass_times_.density;
+  double& density_time = interactions_.listing_pending() ? pass_times_.neighbor_search : pass_times_.density;
   auto clock = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& kernel) {
         if (phases_) {
-          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
-                                             set_phase_pressure);
+          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, interactions_, set_phase_pressure);
         } else if (scene_.solver.density == scene::DensityMethod::summation) {
-          passes::density_summation<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_, set_pressure);
+          passes::density_summation<D>(kernel, fluid_, fluid_fields_, interactions_, set_pressure);
         } else {
           const auto density = std::as_const(fluid_)[fluid_fields_.density];
           for_each_particle(fluid_.size(), [&](std::size_t i) { set_pressure(i, density[i]); });
         }
         lap(clock, density_time);
-        passes::wall_state<D>(kernel, walls_, wall_fields_, fluid_, fluid_fields_, neighbors_, &wall_pressure);
+        passes::wall_states<D>(kernel, interactions_, fluid_, fluid_fields_, &wall_pressure);
         lap(clock, pass_times_.wall_state);
         const std::span<Real> scratch =
-            phases_ ? std::span<Real>{} : neighbors_.pass_scratch(fluid_.size() + walls_.size());
-        passes::fluid_acceleration<D>(kernel, viscosity, stress, fluid_, fluid_fields_, neighbors_, walls_,
-                                      wall_fields_, gravity, scratch, phases_ ? &multiphase : nullptr);
+            phases_ ? std::span<Real>{}
+                    : interactions_.pass_scratch(fluid_.size() + interactions_.contact_particle_count());
+        passes::fluid_acceleration<D>(kernel, viscosity, stress, fluid_, fluid_fields_, interactions_, gravity, scratch,
+                                      phases_ ? &multiphase : nullptr);
         lap(clock, pass_times_.momentum);
       },
       kernel_);
@@ -202,7 +201,7 @@ void Wcsph<D>::add_surface_tension() {
   std::visit(
       [&](const auto& kernel) {
         passes::surface_tension<D>(kernel, scene_.solver.surface_tension.model, *tension_, fluid_, fluid_fields_, phase,
-                                   neighbors_, walls_, wall_fields_);
+                                   interactions_);
       },
       kernel_);
 }
@@ -213,8 +212,7 @@ void Wcsph<D>::compute_density_rate(const Vector<D>& gravity) {
                                               eos_.sound_speed()};
   std::visit(
       [&](const auto& kernel) {
-        passes::continuity<D>(kernel, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_,
-                              diffusion.delta > 0 ? &diffusion : nullptr);
+        passes::continuity<D>(kernel, fluid_, fluid_fields_, interactions_, diffusion.delta > 0 ? &diffusion : nullptr);
       },
       kernel_);
 }
@@ -244,7 +242,7 @@ StepReport Wcsph<D>::step() {
                             fluid_fields_);
   }
   lap(clock, pass_times_.integration);
-  report.removed = neighbors_.update_fluid(fluid_, walls_, listing());
+  report.removed = interactions_.update(fluid_, listing());
   lap(clock, pass_times_.neighbor_search);
   const Vector<D> gravity = setup::gravity_at<D>(scene_, time_ + dt);
   if (scene_.solver.density == scene::DensityMethod::continuity) {
@@ -291,19 +289,19 @@ void Wcsph<D>::shift_particles(Real dt) {
   std::visit(
       [&](const auto& kernel) {
         passes::shift_particles<D>(kernel, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_,
-                                   dt, fluid_, fluid_fields_, neighbors_, walls_, wall_fields_);
+                                   dt, fluid_, fluid_fields_, interactions_);
       },
       kernel_);
 }
 
 template <int D>
 double Wcsph<D>::bytes_per_particle() const {
-  return setup::bytes_per_particle<D>(fluid_, walls_, neighbors_);
+  return setup::bytes_per_particle<D>(fluid_, interactions_);
 }
 
 template <int D>
 MemoryUsage Wcsph<D>::memory_usage() const {
-  return setup::memory_usage<D>(fluid_, walls_, neighbors_);
+  return setup::memory_usage<D>(fluid_, interactions_);
 }
 
 template <int D>

@@ -52,7 +52,8 @@ PairEnergies pair_energies(const Wcsph<2>& simulation) {
   const auto& f = simulation.fluid_fields();
   const auto x = fluid[f.position];
   const auto phase = fluid[f.phase];
-  const auto wall_x = simulation.walls()[simulation.wall_fields().position];
+  const ParticleSet<2>& walls = simulation.interactions().contact(0).particles();
+  const auto wall_x = simulation.interactions().contact(0).positions();
   const double support = std::visit([](const auto& k) { return double(k.support_radius()); }, simulation.kernel());
   const auto near = [&](const Vector<2>& a, const Vector<2>& b) {
     return std::abs(a[0] - b[0]) < support && std::abs(a[1] - b[1]) < support;
@@ -65,7 +66,7 @@ PairEnergies pair_energies(const Wcsph<2>& simulation) {
       const double r = (x[i] - x[j]).norm();
       if (r < support) e.sum[phase[i] + phase[j]] += pair_potential(r, support);
     }
-    for (std::size_t j = 0; j < simulation.walls().size(); ++j) {
+    for (std::size_t j = 0; j < walls.size(); ++j) {
       if (!near(x[i], wall_x[j])) continue;
       const double r = (x[i] - wall_x[j]).norm();
       if (r < support) e.sum[3 + phase[i]] += pair_potential(r, support);

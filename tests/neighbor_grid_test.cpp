@@ -14,7 +14,7 @@
 #include "tide/core/log.hpp"
 #include "tide/neighbor/morton.hpp"
 #include "tide/neighbor/neighbor_list.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/interactions.hpp"
 
 namespace tide {
 namespace {
@@ -658,14 +658,29 @@ TEST_P(CachedGradients, AreTheBruteForceKernelGradients) {
 INSTANTIATE_TEST_SUITE_P(Domains, CachedGradients, testing::Bool(),
                          [](const testing::TestParamInfo<bool>& info) { return info.param ? "periodic" : "closed"; });
 
-// FluidWallNeighbors with a skin keeps its sort and candidates while every particle has moved
-// less than half the skin, rebuilds when one has moved farther or left the domain, and the
-// fluid's lists are the brute-force neighbours at every update.
-TEST(FluidWallNeighbors, RebuildsOnlyWhenAParticleOutrunsHalfTheSkin) {
+// A contact of wall particles at the given places (position, mass, density, pressure).
+Contact<3>& add_walls(Interactions<3>& interactions, const std::vector<Vector<3>>& places, ContactMotion motion,
+                      const char* name = "walls") {
+  ParticleSet<3> walls = particles_at(places);
+  const WallFields<3> fields{walls.position(),
+                             std::nullopt,
+                             walls.add_scalar("mass"),
+                             walls.add_scalar("density"),
+                             walls.add_scalar("pressure"),
+                             std::nullopt};
+  return interactions.add_contact(name, ContactRole::wall, motion, std::move(walls), fields);
+}
+
+// Interactions with a skin keeps its sort and candidates while every particle has moved less
+// than half the skin, rebuilds when one has moved farther or left the domain, and the fluid's
+// lists are the brute-force neighbours at every update.
+TEST(Interactions, RebuildsOnlyWhenAParticleOutrunsHalfTheSkin) {
   const GridDomain<3> domain = test_domain<3>(false);
   const Real skin = Real(0.3) * support;
-  FluidWallNeighbors<3> neighbors(domain, support, skin);
-  ParticleSet<3> walls = particles_at(make_cloud<3>(Cloud::sheet, domain, neighbors.fluid_grid().cell_size()));
+  Interactions<3> neighbors(domain, support, skin);
+  const Contact<3>& contact = add_walls(
+      neighbors, make_cloud<3>(Cloud::sheet, domain, neighbors.fluid_grid().cell_size()), ContactMotion::fixed);
+  const ParticleSet<3>& walls = contact.particles();
   std::vector<Vector<3>> inner;
   for (const Vector<3>& p : make_cloud<3>(Cloud::uniform, domain, neighbors.fluid_grid().cell_size())) {
     bool away_from_sides = true;
@@ -673,10 +688,8 @@ TEST(FluidWallNeighbors, RebuildsOnlyWhenAParticleOutrunsHalfTheSkin) {
     if (away_from_sides) inner.push_back(p);
   }
   ParticleSet<3> fluid = particles_at(inner);
-  neighbors.set_walls(walls);
   const auto expect_brute_force = [&](const char* when) {
     const auto x = std::as_const(fluid)[fluid.position()];
-    const auto wall_x = std::as_const(walls)[walls.position()];
     const auto ids = std::as_const(fluid)[fluid.id()];
     const auto wall_ids = std::as_const(walls)[walls.id()];
     for (std::size_t i = 0; i < fluid.size(); ++i) {
@@ -685,51 +698,99 @@ TEST(FluidWallNeighbors, RebuildsOnlyWhenAParticleOutrunsHalfTheSkin) {
       std::sort(found.begin(), found.end());
       ASSERT_EQ(found, brute_force<3>(x[i], fluid, domain)) << when << ", fluid id " << ids[i];
       found.clear();
-      neighbors.for_each_wall_neighbor(i, x, wall_x,
-                                       [&](Index b, const Vector<3>&, Real) { found.push_back(wall_ids[b]); });
+      contact.for_each_neighbor(i, x, [&](Index b, const Vector<3>&, Real) { found.push_back(wall_ids[b]); });
       std::sort(found.begin(), found.end());
       ASSERT_EQ(found, brute_force<3>(x[i], walls, domain)) << when << ", fluid id " << ids[i] << " to walls";
     }
   };
 
-  EXPECT_EQ(neighbors.update_fluid(fluid, walls), 0u);
+  EXPECT_EQ(neighbors.update(fluid), 0u);
   EXPECT_EQ(neighbors.builds(), 1u);
   expect_brute_force("first build");
   move_by_up_to(fluid, skin / 4, 1);
   move_by_up_to(fluid, skin / 4, 2);  // at most half the skin in all
-  EXPECT_EQ(neighbors.update_fluid(fluid, walls), 0u);
+  EXPECT_EQ(neighbors.update(fluid), 0u);
   EXPECT_EQ(neighbors.builds(), 1u) << "every particle within half the skin of where it was sorted";
   expect_brute_force("after moves of up to half the skin");
 
   auto x = fluid[fluid.position()];
   x.set(0, x[0] + Vector<3>(x[0][0] < Real(0.5) ? skin : -skin, 0, 0));
-  EXPECT_EQ(neighbors.update_fluid(fluid, walls), 0u);
+  EXPECT_EQ(neighbors.update(fluid), 0u);
   EXPECT_EQ(neighbors.builds(), 2u) << "one particle beyond half the skin";
   expect_brute_force("after one particle moved a skin");
 
   x.set(0, Vector<3>(-1, 0.5, 0.5));
-  EXPECT_EQ(neighbors.update_fluid(fluid, walls), 1u);
+  EXPECT_EQ(neighbors.update(fluid), 1u);
   EXPECT_EQ(neighbors.builds(), 3u) << "one particle outside the domain";
   expect_brute_force("after one particle left");
 }
 
-// An update that leaves the listing to the next pair walk hands out, in that walk, the pairs and
-// r² an update that lists at once hands out (bitwise), fluid before walls for every particle,
-// and leaves the same lists for the walks after it.
-TEST(FluidWallNeighbors, ListingInThePairWalkHandsOutWhatListingAtOnceDoes) {
+// A moving contact is re-sorted with the fluid: its particles' moves count against the skin as
+// the fluid's do, and its lists in both directions are the brute-force ones at every update.
+TEST(Interactions, RebuildsWhenAMovingContactOutrunsHalfTheSkin) {
   const GridDomain<3> domain = test_domain<3>(false);
   const Real skin = Real(0.3) * support;
-  using Listing = FluidWallNeighbors<3>::Listing;
-  FluidWallNeighbors<3> at_once(domain, support, skin);
-  FluidWallNeighbors<3> in_walk(domain, support, skin);
-  ParticleSet<3> walls = particles_at(make_cloud<3>(Cloud::sheet, domain, at_once.fluid_grid().cell_size()));
+  Interactions<3> neighbors(domain, support, skin);
+  std::vector<Vector<3>> inner;
+  for (const Vector<3>& p : make_cloud<3>(Cloud::clustered, domain, neighbors.fluid_grid().cell_size())) {
+    bool away_from_sides = true;
+    for (int d = 0; d < 3; ++d) away_from_sides = away_from_sides && p[d] > skin && p[d] < domain.upper[d] - skin;
+    if (away_from_sides) inner.push_back(p);
+  }
+  Contact<3>& body = add_walls(neighbors, inner, ContactMotion::moving, "body");
+  ParticleSet<3> fluid = particles_at(make_cloud<3>(Cloud::uniform, domain, neighbors.fluid_grid().cell_size()));
+  const auto expect_brute_force = [&](const char* when) {
+    const ParticleSet<3>& moving = body.particles();
+    const auto x = std::as_const(fluid)[fluid.position()];
+    const auto body_x = moving[moving.position()];
+    const auto ids = std::as_const(fluid)[fluid.id()];
+    const auto body_ids = moving[moving.id()];
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      std::vector<Index> found;
+      body.for_each_neighbor(i, x, [&](Index b, const Vector<3>&, Real) { found.push_back(body_ids[b]); });
+      std::sort(found.begin(), found.end());
+      ASSERT_EQ(found, brute_force<3>(x[i], moving, domain)) << when << ", fluid id " << ids[i];
+    }
+    for (std::size_t b = 0; b < moving.size(); ++b) {
+      std::vector<Index> found;
+      body.for_each_fluid_neighbor_of(b, x, [&](Index j, const Vector<3>&, Real) { found.push_back(ids[j]); });
+      std::sort(found.begin(), found.end());
+      ASSERT_EQ(found, brute_force<3>(body_x[b], fluid, domain)) << when << ", body id " << body_ids[b];
+    }
+  };
+  EXPECT_EQ(neighbors.update(fluid), 0u);
+  expect_brute_force("first build");
+  move_by_up_to(body.particles(), skin / 4, 3);
+  move_by_up_to(body.particles(), skin / 4, 4);
+  neighbors.update(fluid);
+  EXPECT_EQ(neighbors.builds(), 1u) << "every body particle within half the skin of where it was sorted";
+  expect_brute_force("after body moves of up to half the skin");
+  auto body_x = body.particles()[body.particles().position()];
+  body_x.set(0, body_x[0] + Vector<3>(body_x[0][0] < Real(0.5) ? skin : -skin, 0, 0));
+  neighbors.update(fluid);
+  EXPECT_EQ(neighbors.builds(), 2u) << "one body particle beyond half the skin";
+  expect_brute_force("after one body particle moved a skin");
+}
+
+// An update that leaves the listing to the next pair walk hands out, in that walk, the pairs and
+// r² an update that lists at once hands out (bitwise), fluid before each contact in order for
+// every particle, and leaves the same lists for the walks after it.
+TEST(Interactions, ListingInThePairWalkHandsOutWhatListingAtOnceDoes) {
+  const GridDomain<3> domain = test_domain<3>(false);
+  const Real skin = Real(0.3) * support;
+  using Listing = Interactions<3>::Listing;
+  Interactions<3> at_once(domain, support, skin);
+  Interactions<3> in_walk(domain, support, skin);
+  const auto sheet = make_cloud<3>(Cloud::sheet, domain, at_once.fluid_grid().cell_size());
+  const auto obstacle = make_cloud<3>(Cloud::clustered, domain, at_once.fluid_grid().cell_size());
+  for (Interactions<3>* interactions : {&at_once, &in_walk}) {
+    add_walls(*interactions, sheet, ContactMotion::fixed);
+    add_walls(*interactions, obstacle, ContactMotion::fixed, "obstacle");
+  }
   ParticleSet<3> fluid = particles_at(make_cloud<3>(Cloud::clustered, domain, at_once.fluid_grid().cell_size()));
   ParticleSet<3> fluid_copy = fluid;
-  at_once.set_walls(walls);
-  in_walk.set_walls(walls);
-  const auto wall_x = std::as_const(walls)[walls.position()];
-  // Per particle: its fluid pairs, then its wall pairs, each list ended by a marker.
-  const auto walk = [&](FluidWallNeighbors<3>& neighbors, const ParticleSet<3>& set) {
+  // Per particle: its fluid pairs, then each contact's pairs, each list ended by a marker.
+  const auto walk = [&](Interactions<3>& neighbors, const ParticleSet<3>& set) {
     std::vector<std::vector<ListedPair>> walked(set.size());
     const auto collect = [&](std::size_t i, const auto& runs) {
       runs([&](const NeighborRun<3>& run) {
@@ -737,12 +798,12 @@ TEST(FluidWallNeighbors, ListingInThePairWalkHandsOutWhatListingAtOnceDoes) {
       });
       walked[i].emplace_back(Index(-1), Real(-1));
     };
-    neighbors.walk_fluid_pairs(set[set.position()], wall_x, collect, collect);
+    neighbors.walk_fluid_pairs(set[set.position()], collect,
+                               [&](std::size_t i, std::size_t, const auto& runs) { collect(i, runs); });
     return walked;
   };
   for (int update = 0; update < 3; ++update) {
-    ASSERT_EQ(at_once.update_fluid(fluid, walls, Listing::now),
-              in_walk.update_fluid(fluid_copy, walls, Listing::in_next_pair_walk));
+    ASSERT_EQ(at_once.update(fluid, Listing::now), in_walk.update(fluid_copy, Listing::in_next_pair_walk));
     EXPECT_FALSE(at_once.listing_pending());
     EXPECT_TRUE(in_walk.listing_pending());
     const auto expected = walk(at_once, fluid);

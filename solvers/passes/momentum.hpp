@@ -8,17 +8,18 @@
 #include <cmath>
 #include <span>
 #include <type_traits>
+#include <vector>
 
+#include "neighbor_walk.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
 
 struct ViscositySettings {
   scene::ViscosityModel model = scene::ViscosityModel::artificial;
-  bool walls_viscous = true;  // false for free-slip walls
   Real alpha = 0;
   Real beta = 0;
   Real sound_speed = 0;
@@ -30,7 +31,6 @@ struct ViscositySettings {
 inline ViscositySettings viscosity_settings(const scene::Scene& scene, Real sound_speed, Real kinematic_viscosity,
                                             Real smoothing_length) {
   return {scene.solver.viscosity,
-          scene.walls.slip == scene::WallSlip::no_slip,
           static_cast<Real>(scene.solver.alpha),
           static_cast<Real>(scene.solver.beta),
           sound_speed,
@@ -119,23 +119,23 @@ struct MultiphaseTerms {
 };
 
 /// a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3) + viscous terms + g,
-/// summed over fluid and wall neighbours (walls with their extrapolated p, ρ and velocity).
-/// With `ArtificialStress`, each pair's pressure term gains (R_i + R_j) (W_ij/W(Δx))^4, a
-/// repulsion between particles in tension that stops them clumping in pairs (Monaghan 2000,
-/// J. Comput. Phys. 159, the artificial pressure added to the equation of motion). Without
-/// `WithPressure`, the non-pressure part only: what an incompressible scheme integrates before
-/// its pressure solve. With `Multiphase`, the number-density form of Hu & Adams 2006 (eq. 8):
-/// a_i = −(1/m_i) Σ_j (p_i V_i² + p_j V_j²) ∇W_ij with V = m/ρ, which stays free of spurious
-/// interface forces at any density ratio, and the laminar viscosity of
-/// detail::multiphase_viscous_term; for particles of one mass it is the single-phase form. With
-/// one fluid and `WithPressure`, `scratch` (at least one entry per fluid and wall particle) takes
-/// each particle's p/ρ², computed once per particle rather than once per pair (the same numbers).
+/// summed over fluid and contact neighbours (walls with their extrapolated p, ρ and velocity;
+/// the viscous terms only from viscous contacts: Contact::viscous). With `ArtificialStress`,
+/// each pair's pressure term gains (R_i + R_j) (W_ij/W(Δx))^4, a repulsion between particles in
+/// tension that stops them clumping in pairs (Monaghan 2000, J. Comput. Phys. 159, the artificial
+/// pressure added to the equation of motion). Without `WithPressure`, the non-pressure part
+/// only: what an incompressible scheme integrates before its pressure solve. With `Multiphase`,
+/// the number-density form of Hu & Adams 2006 (eq. 8): a_i = −(1/m_i) Σ_j (p_i V_i² + p_j V_j²)
+/// ∇W_ij with V = m/ρ, which stays free of spurious interface forces at any density ratio, and
+/// the laminar viscosity of detail::multiphase_viscous_term; for particles of one mass it is the
+/// single-phase form. With one fluid and `WithPressure`, `scratch` (at least one entry per fluid
+/// and contact particle) takes each particle's p/ρ², computed once per particle rather than once
+/// per pair (the same numbers).
 template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, bool Multiphase = false,
           class Kernel>
 void momentum(const Kernel& kernel, const ViscositySettings& settings,
               [[maybe_unused]] const ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
-              const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
-              const Vector<D>& gravity, [[maybe_unused]] std::span<Real> scratch,
+              const Interactions<D>& interactions, const Vector<D>& gravity, [[maybe_unused]] std::span<Real> scratch,
               [[maybe_unused]] const MultiphaseTerms* phases = nullptr) {
   static_assert(!(Multiphase && ArtificialStress), "the artificial stress is not compiled for several fluids");
   const auto x = std::as_const(fluid)[f.position];
@@ -143,141 +143,165 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
   const auto mass = std::as_const(fluid)[f.mass];
   const auto density = std::as_const(fluid)[f.density];
   const auto pressure = std::as_const(fluid)[f.pressure];
-  const auto wall_x = walls[w.position];
-  // Read only for viscous (no-slip) walls, the only walls that have a velocity field.
-  const ConstVectorView<D> wall_v = w.velocity ? walls[*w.velocity] : ConstVectorView<D>{};
-  const auto wall_mass = walls[w.mass];
-  const auto wall_density = walls[w.density];
-  const auto wall_pressure = walls[w.pressure];
-  auto acceleration = fluid[f.acceleration];
-  std::span<const Real> fluid_p_over_rho2, wall_p_over_rho2;
-  if constexpr (WithPressure && !Multiphase) {
-    const auto p_over_rho2 = [](std::span<Real> out, std::span<const Real> p, std::span<const Real> rho) {
-      for_each_particle(out.size(), [&](std::size_t i) { out[i] = p[i] / (rho[i] * rho[i]); });
-      return std::span<const Real>(out);
-    };
+  // What the pair loops read of each contact: its masses, density, pressure (as p/ρ² where
+  // that is kept) and, for viscous contacts, the velocity it shows the fluid.
+  struct ContactTerms {
+    std::span<const Real> mass;
+    std::span<const Real> density;
+    std::span<const Real> pressure;
+    std::span<const Real> p_over_rho2;
+    ConstVectorView<D> velocity;
+    bool viscous;
+  };
+  std::span<const Real> fluid_p_over_rho2;
+  [[maybe_unused]] const auto p_over_rho2 = [](std::span<Real> out, std::span<const Real> p,
+                                               std::span<const Real> rho) {
+    for_each_particle(out.size(), [&](std::size_t i) { out[i] = p[i] / (rho[i] * rho[i]); });
+    return std::span<const Real>(out);
+  };
+  if constexpr (WithPressure && !Multiphase)
     fluid_p_over_rho2 = p_over_rho2(scratch.first(fluid.size()), pressure, density);
-    wall_p_over_rho2 = p_over_rho2(scratch.subspan(fluid.size(), walls.size()), wall_pressure, wall_density);
-  }
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    const Vector<D> v_i = v[i];
-    const Real rho_i = density[i];
-    const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
-    [[maybe_unused]] Real stress_i = 0;
-    if constexpr (ArtificialStress) stress_i = detail::artificial_stress_share(stress.epsilon, p_over_rho2_i);
-    // The pressure term of one pair, with the artificial stress when it is compiled in.
-    const auto pressure_term = [&](Real p_over_rho2_j, Real r) {
-      Real term = p_over_rho2_i + p_over_rho2_j;
-      if constexpr (ArtificialStress) {
-        const Real stress_j = detail::artificial_stress_share(stress.epsilon, p_over_rho2_j);
-        term += (stress_i + stress_j) * detail::artificial_stress_weight(kernel, stress, r);
-      }
-      return term;
-    };
-    Vector<D> a = gravity;
-    [[maybe_unused]] Real inverse_mass_i = 0, volume_i = 0, eta_i = 0;
-    if constexpr (Multiphase) {
-      inverse_mass_i = 1 / mass[i];
-      volume_i = mass[i] / rho_i;
-      eta_i = phases->dynamic_viscosity[phases->phase[i]];
-      neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-        if (j == i) return;
-        const Real rho_j = density[j];
-        const Real r = std::sqrt(r2);
-        const Vector<D> grad_w = kernel.gradient(x_ij, r);
-        const Real volume_j = mass[j] / rho_j;
-        const Real vi2 = volume_i * volume_i, vj2 = volume_j * volume_j;
-        if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + pressure[j] * vj2)) * grad_w;
-        if constexpr (Model == scene::ViscosityModel::laminar) {
-          a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i,
-                                                  phases->dynamic_viscosity[phases->phase[j]], vi2 + vj2, v_i - v[j],
-                                                  x_ij, r2, grad_w);
-        } else {
-          a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
-        }
-      });
-      if (!WithPressure && !settings.walls_viscous) {
-        acceleration.set(i, a);
-        return;
-      }
-      neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index b, const Vector<D>& x_ib, Real r2) {
-        const Real rho_b = wall_density[b];
-        const Real r = std::sqrt(r2);
-        const Vector<D> grad_w = kernel.gradient(x_ib, r);
-        // The wall takes the viscosity of the fluid particle beside it.
-        const Real vb2 = phases->wall_volume * phases->wall_volume;
-        const Real vi2 = volume_i * volume_i;
-        if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + wall_pressure[b] * vb2)) * grad_w;
-        if (!settings.walls_viscous) return;
-        if constexpr (Model == scene::ViscosityModel::laminar) {
-          a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i, eta_i, vi2 + vb2,
-                                                  v_i - wall_v[b], x_ib, r2, grad_w);
-        } else {
-          a += detail::viscous_term<D, Model>(settings, wall_mass[b], rho_i, rho_b, v_i - wall_v[b], x_ib, r2, grad_w);
-        }
-      });
-    } else {
-      // The pressure and viscous terms of a run's pairs in a loop of scalars without branches
-      // (vectorised, the neighbours' fields gathered) into arrays of the run's own, which no
-      // other pointer can alias, then applied pair by pair in the list's order, as a walk would:
-      // a −= pressure term, a += viscous term. The pair i–i gives zeros. One run of fluid or wall
-      // neighbours (walls with their extrapolated p and ρ), viscous or not (a std::bool_constant).
-      const auto add_run = [&](auto viscous, const NeighborRun<D>& run, std::span<const Real> masses,
-                               std::span<const Real> densities, std::span<const Real> p_over_rho2,
-                               const ConstVectorView<D>& velocities) {
-        constexpr bool viscous_run = decltype(viscous)::value;
-        std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
-        with_gradients(kernel, run, [&](const auto& gradient) {
-          for (int k = 0; k < run.count; ++k) {
-            const Index j = run.index[k];
-            const Real r = std::sqrt(run.r2[k]);
-            const Real rho_j = densities[j];
-            const std::array<Real, D> grad_w = gradient(k);
-            if constexpr (WithPressure) {
-              const Real scale = masses[j] * pressure_term(p_over_rho2[j], r);
-              for (int d = 0; d < D; ++d) pressure_terms[d][k] = scale * grad_w[d];
-            }
-            if constexpr (viscous_run) {
-              std::array<Real, D> v_ij;
-              Real v_dot_x = 0, x_dot_grad_w = 0;
-              for (int d = 0; d < D; ++d) {
-                v_ij[d] = v_i[d] - velocities.component[d][j];
-                v_dot_x += v_ij[d] * run.x_ij[d][k];
-                x_dot_grad_w += run.x_ij[d][k] * grad_w[d];
-              }
-              const Real coefficient = detail::viscous_coefficient<Model>(settings, masses[j], rho_i, rho_j, v_dot_x,
-                                                                          x_dot_grad_w, run.r2[k]);
-              const std::array<Real, D>& direction = Model == scene::ViscosityModel::artificial ? grad_w : v_ij;
-              for (int d = 0; d < D; ++d) viscous_terms[d][k] = coefficient * direction[d];
-            }
-          }
-        });
-        for (int k = 0; k < run.count; ++k) {
-          if constexpr (WithPressure) {
-            for (int d = 0; d < D; ++d) a[d] -= pressure_terms[d][k];
-          }
-          if constexpr (viscous_run) {
-            for (int d = 0; d < D; ++d) a[d] += viscous_terms[d][k];
-          }
-        }
-      };
-      neighbors.for_each_fluid_run(i, x, [&](const NeighborRun<D>& run) {
-        add_run(std::true_type{}, run, mass, density, fluid_p_over_rho2, v);
-      });
-      if (!WithPressure && !settings.walls_viscous) {
-        acceleration.set(i, a);
-        return;
-      }
-      neighbors.for_each_wall_run(i, x, wall_x, [&](const NeighborRun<D>& run) {
-        if (settings.walls_viscous) {
-          add_run(std::true_type{}, run, wall_mass, wall_density, wall_p_over_rho2, wall_v);
-        } else {
-          add_run(std::false_type{}, run, wall_mass, wall_density, wall_p_over_rho2, wall_v);
-        }
-      });
+  std::vector<ContactTerms> contacts;
+  std::size_t scratch_used = fluid.size();
+  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+    const Contact<D>& contact = interactions.contact(k);
+    const WallFields<D>& w = contact.fields();
+    const ParticleSet<D>& set = contact.particles();
+    ContactTerms terms{set[w.mass],
+                       set[w.density],
+                       set[w.pressure],
+                       {},
+                       // Read only for viscous (no-slip) walls, the only walls that have a velocity field.
+                       w.velocity ? set[*w.velocity] : ConstVectorView<D>{},
+                       contact.viscous()};
+    if constexpr (WithPressure && !Multiphase) {
+      terms.p_over_rho2 = p_over_rho2(scratch.subspan(scratch_used, set.size()), terms.pressure, terms.density);
+      scratch_used += set.size();
     }
-    acceleration.set(i, a);
-  });
+    contacts.push_back(terms);
+  }
+  for_each_fluid_particle<D>(
+      interactions, x, VectorOutput<D>{fluid[f.acceleration]}, [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+        const Vector<D> v_i = v[i];
+        const Real rho_i = density[i];
+        const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
+        [[maybe_unused]] Real stress_i = 0;
+        if constexpr (ArtificialStress) stress_i = detail::artificial_stress_share(stress.epsilon, p_over_rho2_i);
+        // The pressure term of one pair, with the artificial stress when it is compiled in.
+        const auto pressure_term = [&](Real p_over_rho2_j, Real r) {
+          Real term = p_over_rho2_i + p_over_rho2_j;
+          if constexpr (ArtificialStress) {
+            const Real stress_j = detail::artificial_stress_share(stress.epsilon, p_over_rho2_j);
+            term += (stress_i + stress_j) * detail::artificial_stress_weight(kernel, stress, r);
+          }
+          return term;
+        };
+        Vector<D> a = gravity;
+        [[maybe_unused]] Real inverse_mass_i = 0, volume_i = 0, eta_i = 0;
+        if constexpr (Multiphase) {
+          inverse_mass_i = 1 / mass[i];
+          volume_i = mass[i] / rho_i;
+          eta_i = phases->dynamic_viscosity[phases->phase[i]];
+          neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
+            if (j == i) return;
+            const Real rho_j = density[j];
+            const Real r = std::sqrt(r2);
+            const Vector<D> grad_w = kernel.gradient(x_ij, r);
+            const Real volume_j = mass[j] / rho_j;
+            const Real vi2 = volume_i * volume_i, vj2 = volume_j * volume_j;
+            if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + pressure[j] * vj2)) * grad_w;
+            if constexpr (Model == scene::ViscosityModel::laminar) {
+              a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i,
+                                                      phases->dynamic_viscosity[phases->phase[j]], vi2 + vj2,
+                                                      v_i - v[j], x_ij, r2, grad_w);
+            } else {
+              a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);
+            }
+          });
+          neighbors.contacts([&](const ContactNeighbors<D>& contact) {
+            const ContactTerms& terms = contacts[contact.number()];
+            if (!WithPressure && !terms.viscous) return;
+            contact.pairs([&](Index b, const Vector<D>& x_ib, Real r2) {
+              const Real rho_b = terms.density[b];
+              const Real r = std::sqrt(r2);
+              const Vector<D> grad_w = kernel.gradient(x_ib, r);
+              // The wall takes the viscosity of the fluid particle beside it.
+              const Real vb2 = phases->wall_volume * phases->wall_volume;
+              const Real vi2 = volume_i * volume_i;
+              if constexpr (WithPressure)
+                a -= (inverse_mass_i * (pressure[i] * vi2 + terms.pressure[b] * vb2)) * grad_w;
+              if (!terms.viscous) return;
+              if constexpr (Model == scene::ViscosityModel::laminar) {
+                a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i, eta_i,
+                                                        vi2 + vb2, v_i - terms.velocity[b], x_ib, r2, grad_w);
+              } else {
+                a += detail::viscous_term<D, Model>(settings, terms.mass[b], rho_i, rho_b, v_i - terms.velocity[b],
+                                                    x_ib, r2, grad_w);
+              }
+            });
+          });
+        } else {
+          // The pressure and viscous terms of a run's pairs in a loop of scalars without branches
+          // (vectorised, the neighbours' fields gathered) into arrays of the run's own, which no
+          // other pointer can alias, then applied pair by pair in the list's order, as a walk would:
+          // a −= pressure term, a += viscous term. The pair i–i gives zeros. One run of fluid or
+          // contact neighbours (walls with their extrapolated p and ρ), viscous or not (a
+          // std::bool_constant).
+          const auto add_run = [&](auto viscous, const NeighborRun<D>& run, std::span<const Real> masses,
+                                   std::span<const Real> densities, std::span<const Real> p_over_rho2_j,
+                                   const ConstVectorView<D>& velocities) {
+            constexpr bool viscous_run = decltype(viscous)::value;
+            std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
+            with_gradients(kernel, run, [&](const auto& gradient) {
+              for (int k = 0; k < run.count; ++k) {
+                const Index j = run.index[k];
+                const Real r = std::sqrt(run.r2[k]);
+                const Real rho_j = densities[j];
+                const std::array<Real, D> grad_w = gradient(k);
+                if constexpr (WithPressure) {
+                  const Real scale = masses[j] * pressure_term(p_over_rho2_j[j], r);
+                  for (int d = 0; d < D; ++d) pressure_terms[d][k] = scale * grad_w[d];
+                }
+                if constexpr (viscous_run) {
+                  std::array<Real, D> v_ij;
+                  Real v_dot_x = 0, x_dot_grad_w = 0;
+                  for (int d = 0; d < D; ++d) {
+                    v_ij[d] = v_i[d] - velocities.component[d][j];
+                    v_dot_x += v_ij[d] * run.x_ij[d][k];
+                    x_dot_grad_w += run.x_ij[d][k] * grad_w[d];
+                  }
+                  const Real coefficient = detail::viscous_coefficient<Model>(settings, masses[j], rho_i, rho_j,
+                                                                              v_dot_x, x_dot_grad_w, run.r2[k]);
+                  const std::array<Real, D>& direction = Model == scene::ViscosityModel::artificial ? grad_w : v_ij;
+                  for (int d = 0; d < D; ++d) viscous_terms[d][k] = coefficient * direction[d];
+                }
+              }
+            });
+            for (int k = 0; k < run.count; ++k) {
+              if constexpr (WithPressure) {
+                for (int d = 0; d < D; ++d) a[d] -= pressure_terms[d][k];
+              }
+              if constexpr (viscous_run) {
+                for (int d = 0; d < D; ++d) a[d] += viscous_terms[d][k];
+              }
+            }
+          };
+          neighbors.fluid_runs(
+              [&](const NeighborRun<D>& run) { add_run(std::true_type{}, run, mass, density, fluid_p_over_rho2, v); });
+          neighbors.contacts([&](const ContactNeighbors<D>& contact) {
+            const ContactTerms& terms = contacts[contact.number()];
+            if (!WithPressure && !terms.viscous) return;
+            contact.runs([&](const NeighborRun<D>& run) {
+              if (terms.viscous) {
+                add_run(std::true_type{}, run, terms.mass, terms.density, terms.p_over_rho2, terms.velocity);
+              } else {
+                add_run(std::false_type{}, run, terms.mass, terms.density, terms.p_over_rho2, terms.velocity);
+              }
+            });
+          });
+        }
+        return a;
+      });
 }
 
 /// momentum() compiled for the viscosity model of `settings`, for artificial stress on or off and
@@ -286,19 +310,18 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
 /// momentum().
 template <int D, bool WithPressure = true, class Kernel>
 void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, const ArtificialStressSettings& stress,
-                        ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
-                        const ParticleSet<D>& walls, const WallFields<D>& w, const Vector<D>& gravity,
-                        std::span<Real> scratch, const MultiphaseTerms* phases = nullptr) {
+                        ParticleSet<D>& fluid, const FluidFields<D>& f, const Interactions<D>& interactions,
+                        const Vector<D>& gravity, std::span<Real> scratch, const MultiphaseTerms* phases = nullptr) {
   const auto run = [&]<scene::ViscosityModel Model, bool Stress>() {
-    momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, neighbors, walls, w, gravity, scratch);
+    momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, interactions, gravity, scratch);
   };
   if (phases) {
     if (settings.model == scene::ViscosityModel::artificial) {
-      momentum<D, scene::ViscosityModel::artificial, WithPressure, false, true>(
-          kernel, settings, stress, fluid, f, neighbors, walls, w, gravity, {}, phases);
+      momentum<D, scene::ViscosityModel::artificial, WithPressure, false, true>(kernel, settings, stress, fluid, f,
+                                                                                interactions, gravity, {}, phases);
     } else {
       momentum<D, scene::ViscosityModel::laminar, WithPressure, false, true>(kernel, settings, stress, fluid, f,
-                                                                             neighbors, walls, w, gravity, {}, phases);
+                                                                             interactions, gravity, {}, phases);
     }
     return;
   }

@@ -8,9 +8,11 @@
 #include <cmath>
 #include <span>
 #include <utility>
+#include <vector>
 
+#include "neighbor_walk.hpp"
 #include "tide/core/parallel.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
@@ -24,47 +26,61 @@ struct ShiftingSettings {
 
 namespace detail {
 
-/// Calls add(V_j, x_ij, r²) for every fluid (j ≠ i) and wall neighbour of fluid particle i.
+/// Calls add(V_j, x_ij, r²) for every fluid (j ≠ i) and contact neighbour of fluid particle i,
+/// V_j = m_j/ρ_j; `contact_volumes` holds each contact's masses and densities.
 template <int D, class Add>
-void for_each_volume_neighbor(std::size_t i, const ParticleSet<D>& fluid, const FluidFields<D>& f,
-                              const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
-                              const WallFields<D>& w, Add&& add) {
-  const auto x = fluid[f.position];
-  const auto mass = fluid[f.mass];
-  const auto density = fluid[f.density];
-  const auto wall_mass = walls[w.mass];
-  const auto wall_density = walls[w.density];
-  neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
+void for_each_volume_neighbor(
+    std::size_t i, const FluidNeighbors<D>& neighbors, std::span<const Real> mass, std::span<const Real> density,
+    const std::vector<std::pair<std::span<const Real>, std::span<const Real>>>& contact_volumes, Add&& add) {
+  neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
     if (j != i) add(mass[j] / density[j], x_ij, r2);
   });
-  neighbors.for_each_wall_neighbor(i, x, walls[w.position], [&](Index b, const Vector<D>& x_ib, Real r2) {
-    add(wall_mass[b] / wall_density[b], x_ib, r2);
+  neighbors.contacts([&](const ContactNeighbors<D>& contact) {
+    const auto& [contact_mass, contact_density] = contact_volumes[contact.number()];
+    contact.pairs(
+        [&](Index b, const Vector<D>& x_ib, Real r2) { add(contact_mass[b] / contact_density[b], x_ib, r2); });
   });
+}
+
+/// The masses and densities of every contact, for for_each_volume_neighbor.
+template <int D>
+std::vector<std::pair<std::span<const Real>, std::span<const Real>>> contact_volumes(
+    const Interactions<D>& interactions) {
+  std::vector<std::pair<std::span<const Real>, std::span<const Real>>> volumes;
+  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+    const Contact<D>& contact = interactions.contact(k);
+    volumes.emplace_back(contact.particles()[contact.fields().mass], contact.particles()[contact.fields().density]);
+  }
+  return volumes;
 }
 
 }  // namespace detail
 
-/// The divergence of position ∇·r_i = −Σ_j V_j x_ij·∇W_ij over fluid and wall neighbours
+/// The divergence of position ∇·r_i = −Σ_j V_j x_ij·∇W_ij over fluid and contact neighbours
 /// (V_j = m_j/ρ_j): the dimension inside the fluid, smaller where the support is partly empty,
 /// which marks the free surface (Lee et al. 2008; Lind et al. 2012 take ∇·r < 1.5 in 2D).
 template <int D, class Kernel>
 void position_divergence(const Kernel& kernel, const ParticleSet<D>& fluid, const FluidFields<D>& f,
-                         const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
-                         std::span<Real> divergence) {
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    Real sum = 0;
-    detail::for_each_volume_neighbor<D>(i, fluid, f, neighbors, walls, w,
-                                        [&](Real volume, const Vector<D>& x_ij, Real r2) {
-                                          sum -= volume * x_ij.dot(kernel.gradient(x_ij, std::sqrt(r2)));
-                                        });
-    divergence[i] = sum;
-  });
+                         const Interactions<D>& interactions, std::span<Real> divergence) {
+  const auto mass = fluid[f.mass];
+  const auto density = fluid[f.density];
+  const auto volumes = detail::contact_volumes(interactions);
+  for_each_fluid_particle<D>(interactions, fluid[f.position], ScalarOutput{divergence},
+                             [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+                               Real sum = 0;
+                               detail::for_each_volume_neighbor<D>(
+                                   i, neighbors, mass, density, volumes,
+                                   [&](Real volume, const Vector<D>& x_ij, Real r2) {
+                                     sum -= volume * x_ij.dot(kernel.gradient(x_ij, std::sqrt(r2)));
+                                   });
+                               return sum;
+                             });
 }
 
 /// Writes the shift of every fluid particle into `shift`:
 ///   δr_i = −D_i Σ_j [1 + R (W_ij/W(Δx))^n] V_j ∇W_ij,  R = 0.2, n = 4
 /// (Lind, Xu, Stansby & Rogers 2012, eq. 13 with the anti-pairing term of their eq. 14), over
-/// fluid and wall neighbours, so that a particle moves down the gradient of particle
+/// fluid and contact neighbours, so that a particle moves down the gradient of particle
 /// concentration and pairs closer than Δx repel. D is that of Sun et al. 2017 (eq. 9),
 /// CFL·Ma·(2h)² = 4 h U Δt, with U the current maximum speed: the shift is a diffusion of 4 h U
 /// per unit time whatever the time step, and a fluid coming to rest is no longer stirred. (The
@@ -77,38 +93,38 @@ void position_divergence(const Kernel& kernel, const ParticleSet<D>& fluid, cons
 /// not shifted.
 template <int D, class Kernel>
 void particle_shifting(const Kernel& kernel, const ShiftingSettings& settings, const ParticleSet<D>& fluid,
-                       const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
-                       const WallFields<D>& w, std::span<const Real> divergence, VectorView<D> shift) {
+                       const FluidFields<D>& f, const Interactions<D>& interactions, std::span<const Real> divergence,
+                       VectorView<D> shift) {
   constexpr Real repulsion = Real(0.2);  // R
-  const auto x = fluid[f.position];
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    if (divergence[i] < settings.isolated_divergence) {
-      shift.set(i, Vector<D>::Zero());
-      return;
-    }
-    Vector<D> concentration_gradient = Vector<D>::Zero();  // Σ V_j ∇W_ij
-    Vector<D> weighted_gradient = Vector<D>::Zero();       // Σ [1 + R (W/W(Δx))⁴] V_j ∇W_ij
-    detail::for_each_volume_neighbor<D>(i, fluid, f, neighbors, walls, w,
-                                        [&](Real volume, const Vector<D>& x_ij, Real r2) {
-                                          const Real r = std::sqrt(r2);
-                                          const Vector<D> grad_w = volume * kernel.gradient(x_ij, r);
-                                          const Real ratio = kernel.value(r) / settings.lattice_kernel;
-                                          const Real ratio2 = ratio * ratio;
-                                          concentration_gradient += grad_w;
-                                          weighted_gradient += (1 + repulsion * ratio2 * ratio2) * grad_w;
-                                        });
-    bool near_surface = divergence[i] < settings.surface_divergence;
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>&, Real) {
-      near_surface = near_surface || divergence[j] < settings.surface_divergence;
-    });
-    Vector<D> delta = -settings.diffusion * weighted_gradient;
-    const Real norm = concentration_gradient.norm();
-    if (near_surface && norm > 0) {
-      const Vector<D> normal = -concentration_gradient / norm;
-      delta -= delta.dot(normal) * normal;
-    }
-    shift.set(i, delta);
-  });
+  const auto mass = fluid[f.mass];
+  const auto density = fluid[f.density];
+  const auto volumes = detail::contact_volumes(interactions);
+  for_each_fluid_particle<D>(
+      interactions, fluid[f.position], VectorOutput<D>{shift}, [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+        if (divergence[i] < settings.isolated_divergence) return Vector<D>(Vector<D>::Zero());
+        Vector<D> concentration_gradient = Vector<D>::Zero();  // Σ V_j ∇W_ij
+        Vector<D> weighted_gradient = Vector<D>::Zero();       // Σ [1 + R (W/W(Δx))⁴] V_j ∇W_ij
+        detail::for_each_volume_neighbor<D>(i, neighbors, mass, density, volumes,
+                                            [&](Real volume, const Vector<D>& x_ij, Real r2) {
+                                              const Real r = std::sqrt(r2);
+                                              const Vector<D> grad_w = volume * kernel.gradient(x_ij, r);
+                                              const Real ratio = kernel.value(r) / settings.lattice_kernel;
+                                              const Real ratio2 = ratio * ratio;
+                                              concentration_gradient += grad_w;
+                                              weighted_gradient += (1 + repulsion * ratio2 * ratio2) * grad_w;
+                                            });
+        bool near_surface = divergence[i] < settings.surface_divergence;
+        neighbors.fluid_pairs([&](Index j, const Vector<D>&, Real) {
+          near_surface = near_surface || divergence[j] < settings.surface_divergence;
+        });
+        Vector<D> delta = -settings.diffusion * weighted_gradient;
+        const Real norm = concentration_gradient.norm();
+        if (near_surface && norm > 0) {
+          const Vector<D> normal = -concentration_gradient / norm;
+          delta -= delta.dot(normal) * normal;
+        }
+        return delta;
+      });
 }
 
 /// Moves every fluid particle by its shift: position_divergence, then particle_shifting with the
@@ -120,12 +136,11 @@ void particle_shifting(const Kernel& kernel, const ShiftingSettings& settings, c
 /// thresholds are those of Lind et al. 2012 (∇·r < D − 0.5; splash below D/2).
 template <int D, class Kernel>
 void shift_particles(const Kernel& kernel, Real spacing, Real smoothing_length, Real max_speed, Real dt,
-                     ParticleSet<D>& fluid, const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
-                     const ParticleSet<D>& walls, const WallFields<D>& w) {
+                     ParticleSet<D>& fluid, const FluidFields<D>& f, const Interactions<D>& interactions) {
   const Real diffusion = std::min(4 * smoothing_length * max_speed * dt, smoothing_length * smoothing_length / 2);
   const ShiftingSettings settings{diffusion, kernel.value(spacing), Real(D) - Real(0.5), Real(D) / 2};
-  position_divergence<D>(kernel, fluid, f, neighbors, walls, w, fluid[f.position_divergence]);
-  particle_shifting<D>(kernel, settings, fluid, f, neighbors, walls, w, std::as_const(fluid)[f.position_divergence],
+  position_divergence<D>(kernel, fluid, f, interactions, fluid[f.position_divergence]);
+  particle_shifting<D>(kernel, settings, fluid, f, interactions, std::as_const(fluid)[f.position_divergence],
                        fluid[f.shift]);
   auto x = fluid[f.position];
   const auto shift = std::as_const(fluid)[f.shift];

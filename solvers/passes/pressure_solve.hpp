@@ -1,6 +1,6 @@
 #pragma once
 
-// The two passes of an implicit pressure solve (DFSPH, IISPH), over fluid and wall neighbours.
+// The two passes of an implicit pressure solve (DFSPH, IISPH), over fluid and contact neighbours.
 //
 // The pressure acceleration is the symmetric one of WCSPH (Monaghan 1992, eq. 3.3), and the walls
 // are those of WCSPH too: wall particles on the fluid's lattice whose pressure is extrapolated
@@ -16,11 +16,13 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <vector>
 
 #include "neighbor_masses.hpp"
+#include "neighbor_walk.hpp"
 #include "tide/core/parallel.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
 #include "tide/solvers/incompressible_sph.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
@@ -34,58 +36,63 @@ namespace tide::passes {
 /// α_i = ρ_i² / (m_i² |Σ_j ∇W_ij + Σ_b ∇W_ib|² + m_i³ Σ_j |∇W_ij|² / m_j); for one mass both agree.
 template <int D, bool NumberDensity = false, class Kernel>
 void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
-                     const PressureSolveFields<D>& s, const FluidWallNeighbors<D>& neighbors,
-                     const ParticleSet<D>& walls, const WallFields<D>& w) {
+                     const PressureSolveFields<D>& s, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
   const auto density = std::as_const(fluid)[f.density];
-  const auto wall_x = walls[w.position];
-  const auto wall_mass = walls[w.mass];
-  auto factor = fluid[s.factor];
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    Vector<D> fluid_sum = Vector<D>::Zero();
-    Vector<D> wall_sum = Vector<D>::Zero();
-    Real squares = 0;
-    // The terms of a run in a loop without branches, then added in the list's order; the pair
-    // i–i gives exact zeros.
-    neighbors.template for_each_fluid_run<false>(i, x, [&](const NeighborRun<D>& run) {
-      with_gradients(kernel, run, [&](const auto& gradient) {
-        std::array<std::array<Real, NeighborRun<D>::capacity>, D> sum_terms;
-        std::array<Real, NeighborRun<D>::capacity> square_terms;
-        for (int k = 0; k < run.count; ++k) {
-          const std::array<Real, D> grad_w = gradient(k);
-          const Real m_j = mass[run.index[k]];
-          Real grad_w2 = 0;
-          for (int d = 0; d < D; ++d) {
-            grad_w2 += grad_w[d] * grad_w[d];
-            sum_terms[d][k] = NumberDensity ? grad_w[d] : m_j * grad_w[d];
-          }
-          square_terms[k] = NumberDensity ? grad_w2 / m_j : m_j * grad_w2;
-        }
-        for (int k = 0; k < run.count; ++k) {
-          for (int d = 0; d < D; ++d) fluid_sum[d] += sum_terms[d][k];
-          squares += square_terms[k];
-        }
+  std::vector<std::span<const Real>> contact_mass;
+  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+    const Contact<D>& contact = interactions.contact(k);
+    contact_mass.push_back(contact.particles()[contact.fields().mass]);
+  }
+  for_each_fluid_particle<D>(
+      interactions, x, ScalarOutput{fluid[s.factor]}, [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+        Vector<D> fluid_sum = Vector<D>::Zero();
+        Vector<D> contact_sum = Vector<D>::Zero();
+        Real squares = 0;
+        // The terms of a run in a loop without branches, then added in the list's order; the pair
+        // i–i gives exact zeros.
+        neighbors.template fluid_runs<false>([&](const NeighborRun<D>& run) {
+          with_gradients(kernel, run, [&](const auto& gradient) {
+            std::array<std::array<Real, NeighborRun<D>::capacity>, D> sum_terms;
+            std::array<Real, NeighborRun<D>::capacity> square_terms;
+            for (int k = 0; k < run.count; ++k) {
+              const std::array<Real, D> grad_w = gradient(k);
+              const Real m_j = mass[run.index[k]];
+              Real grad_w2 = 0;
+              for (int d = 0; d < D; ++d) {
+                grad_w2 += grad_w[d] * grad_w[d];
+                sum_terms[d][k] = NumberDensity ? grad_w[d] : m_j * grad_w[d];
+              }
+              square_terms[k] = NumberDensity ? grad_w2 / m_j : m_j * grad_w2;
+            }
+            for (int k = 0; k < run.count; ++k) {
+              for (int d = 0; d < D; ++d) fluid_sum[d] += sum_terms[d][k];
+              squares += square_terms[k];
+            }
+          });
+        });
+        neighbors.contacts([&](const ContactNeighbors<D>& contact) {
+          const std::span<const Real> masses = contact_mass[contact.number()];
+          contact.template runs<false>([&](const NeighborRun<D>& run) {
+            with_gradients(kernel, run, [&](const auto& gradient) {
+              std::array<std::array<Real, NeighborRun<D>::capacity>, D> sum_terms;
+              for (int k = 0; k < run.count; ++k) {
+                const std::array<Real, D> grad_w = gradient(k);
+                const Real m_b = NumberDensity ? Real(1) : masses[run.index[k]];
+                for (int d = 0; d < D; ++d) sum_terms[d][k] = NumberDensity ? grad_w[d] : m_b * grad_w[d];
+              }
+              for (int k = 0; k < run.count; ++k)
+                for (int d = 0; d < D; ++d) contact_sum[d] += sum_terms[d][k];
+            });
+          });
+        });
+        const Real m_i = mass[i];
+        const Real gradient_norm2 = (fluid_sum + contact_sum).squaredNorm();
+        const Real denominator =
+            NumberDensity ? m_i * m_i * (gradient_norm2 + m_i * squares) : gradient_norm2 + m_i * squares;
+        return denominator > 0 ? density[i] * density[i] / denominator : Real(0);
       });
-    });
-    neighbors.template for_each_wall_run<false>(i, x, wall_x, [&](const NeighborRun<D>& run) {
-      with_gradients(kernel, run, [&](const auto& gradient) {
-        std::array<std::array<Real, NeighborRun<D>::capacity>, D> sum_terms;
-        for (int k = 0; k < run.count; ++k) {
-          const std::array<Real, D> grad_w = gradient(k);
-          const Real m_b = NumberDensity ? Real(1) : wall_mass[run.index[k]];
-          for (int d = 0; d < D; ++d) sum_terms[d][k] = NumberDensity ? grad_w[d] : m_b * grad_w[d];
-        }
-        for (int k = 0; k < run.count; ++k)
-          for (int d = 0; d < D; ++d) wall_sum[d] += sum_terms[d][k];
-      });
-    });
-    const Real m_i = mass[i];
-    const Real gradient_norm2 = (fluid_sum + wall_sum).squaredNorm();
-    const Real denominator =
-        NumberDensity ? m_i * m_i * (gradient_norm2 + m_i * squares) : gradient_norm2 + m_i * squares;
-    factor[i] = denominator > 0 ? density[i] * density[i] / denominator : Real(0);
-  });
 }
 
 /// v_i = v*_i − Δt [Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij + Σ_b m_b (p_i/ρ_i² + p_b/ρ_b²) ∇W_ib]: the
@@ -100,59 +107,69 @@ void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFie
 template <int D, bool NumberDensity = false, bool UniformMasses = false, class Kernel>
 void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                        const PressureSolveFields<D>& s, std::span<const Real> pressure,
-                       const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w,
-                       Real dt, std::span<Real> pressure_term) {
+                       const Interactions<D>& interactions, Real dt, std::span<Real> pressure_term) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
   const auto density = std::as_const(fluid)[f.density];
   const auto predicted = std::as_const(fluid)[s.predicted_velocity];
-  const auto wall_x = walls[w.position];
-  const auto wall_mass = walls[w.mass];
-  const auto wall_density = walls[w.density];
-  const auto wall_pressure = walls[w.pressure];
   const NeighborMasses<UniformMasses> fluid_masses(mass);
-  const NeighborMasses<UniformMasses> wall_masses(wall_mass);
-  auto v = fluid[f.velocity];
+  // Per contact: its masses, density and (extrapolated) pressure.
+  struct ContactTerms {
+    NeighborMasses<UniformMasses> masses;
+    std::span<const Real> density;
+    std::span<const Real> pressure;
+  };
+  std::vector<ContactTerms> contacts;
+  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+    const Contact<D>& contact = interactions.contact(k);
+    const WallFields<D>& w = contact.fields();
+    const ParticleSet<D>& set = contact.particles();
+    contacts.push_back({NeighborMasses<UniformMasses>(set[w.mass]), set[w.density], set[w.pressure]});
+  }
   if constexpr (!NumberDensity)
     for_each_particle(fluid.size(), [&](std::size_t i) { pressure_term[i] = pressure[i] / (density[i] * density[i]); });
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    const Real rho_i = density[i];
-    const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
-    const Real inverse_mass_i = 1 / mass[i];
-    // Without a branch, so that accumulate_along_gradients() vectorises it; the pair i–i adds an exact zero.
-    const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a, const NeighborMasses<UniformMasses>& masses,
-                                   std::span<const Real> densities, std::span<const Real> pressures) {
-      with_gradients(kernel, run, [&](const auto& gradient) {
-        accumulate_along_gradients(run, a, gradient, [&](int k) {
-          const Index j = run.index[k];
-          const Real rho_j = densities[j];
-          const Real m_j = masses[j];
-          const Real term = NumberDensity
-                                ? mass[i] * p_over_rho2_i + m_j * m_j * inverse_mass_i * pressures[j] / (rho_j * rho_j)
+  for_each_fluid_particle<D>(
+      interactions, x, VectorOutput<D>{fluid[f.velocity]}, [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+        const Real rho_i = density[i];
+        const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
+        const Real inverse_mass_i = 1 / mass[i];
+        // Without a branch, so that accumulate_along_gradients() vectorises it; the pair i–i adds an exact zero.
+        const auto pressure_push = [&](const NeighborRun<D>& run, Vector<D>& a,
+                                       const NeighborMasses<UniformMasses>& masses, std::span<const Real> densities,
+                                       std::span<const Real> pressures) {
+          with_gradients(kernel, run, [&](const auto& gradient) {
+            accumulate_along_gradients(run, a, gradient, [&](int k) {
+              const Index j = run.index[k];
+              const Real rho_j = densities[j];
+              const Real m_j = masses[j];
+              const Real term =
+                  NumberDensity ? mass[i] * p_over_rho2_i + m_j * m_j * inverse_mass_i * pressures[j] / (rho_j * rho_j)
                                 : m_j * (p_over_rho2_i + pressures[j] / (rho_j * rho_j));
-          return -term;
-        });
-      });
-    };
-    Vector<D> a = Vector<D>::Zero();
-    if constexpr (NumberDensity) {
-      neighbors.template for_each_fluid_run<false>(
-          i, x, [&](const NeighborRun<D>& run) { pressure_push(run, a, fluid_masses, density, pressure); });
-    } else {
-      neighbors.template for_each_fluid_run<false>(i, x, [&](const NeighborRun<D>& run) {
-        with_gradients(kernel, run, [&](const auto& gradient) {
-          accumulate_along_gradients(run, a, gradient, [&](int k) {
-            const Index j = run.index[k];
-            return -(fluid_masses[j] * (p_over_rho2_i + pressure_term[j]));
+              return -term;
+            });
           });
+        };
+        Vector<D> a = Vector<D>::Zero();
+        if constexpr (NumberDensity) {
+          neighbors.template fluid_runs<false>(
+              [&](const NeighborRun<D>& run) { pressure_push(run, a, fluid_masses, density, pressure); });
+        } else {
+          neighbors.template fluid_runs<false>([&](const NeighborRun<D>& run) {
+            with_gradients(kernel, run, [&](const auto& gradient) {
+              accumulate_along_gradients(run, a, gradient, [&](int k) {
+                const Index j = run.index[k];
+                return -(fluid_masses[j] * (p_over_rho2_i + pressure_term[j]));
+              });
+            });
+          });
+        }
+        neighbors.contacts([&](const ContactNeighbors<D>& contact) {
+          const ContactTerms& terms = contacts[contact.number()];
+          contact.template runs<false>(
+              [&](const NeighborRun<D>& run) { pressure_push(run, a, terms.masses, terms.density, terms.pressure); });
         });
+        return Vector<D>(predicted[i] + dt * a);
       });
-    }
-    neighbors.template for_each_wall_run<false>(i, x, wall_x, [&](const NeighborRun<D>& run) {
-      pressure_push(run, a, wall_masses, wall_density, wall_pressure);
-    });
-    v.set(i, predicted[i] + dt * a);
-  });
 }
 
 }  // namespace tide::passes

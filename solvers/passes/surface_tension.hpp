@@ -9,9 +9,10 @@
 #include <string_view>
 #include <vector>
 
+#include "neighbor_walk.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
@@ -63,21 +64,21 @@ inline Real akinci_adhesion(Real r, Real support, Real scale) {
 /// are left out: they carry no colour, so they neither add to nor bend the interface normal.
 template <int D, class Kernel>
 void colour_gradient(const Kernel& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
-                     const FluidFields<D>& f, std::span<const Index> phase, const FluidWallNeighbors<D>& neighbors) {
+                     const FluidFields<D>& f, std::span<const Index> phase, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
   const auto density = std::as_const(fluid)[f.density];
-  auto gradient = fluid[f.colour_gradient];
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    const Real c_i = phase[i] == s.colour_phase ? 1 : 0;
-    Vector<D> n = Vector<D>::Zero();
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      const Real c_j = phase[j] == s.colour_phase ? 1 : 0;
-      if (c_j == c_i) return;
-      n += (mass[j] / density[j] * (c_j - c_i)) * kernel.gradient(x_ij, std::sqrt(r2));
-    });
-    gradient.set(i, n);
-  });
+  for_each_fluid_particle<D>(interactions, x, VectorOutput<D>{fluid[f.colour_gradient]},
+                             [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+                               const Real c_i = phase[i] == s.colour_phase ? 1 : 0;
+                               Vector<D> n = Vector<D>::Zero();
+                               neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
+                                 const Real c_j = phase[j] == s.colour_phase ? 1 : 0;
+                                 if (c_j == c_i) return;
+                                 n += (mass[j] / density[j] * (c_j - c_i)) * kernel.gradient(x_ij, std::sqrt(r2));
+                               });
+                               return n;
+                             });
 }
 
 /// Continuum surface force a_i += σ κ_i n_i · 2/(ρ_a + ρ_b) (Brackbill et al. 1992, eq. 41 with
@@ -91,129 +92,134 @@ void colour_gradient(const Kernel& kernel, const SurfaceTensionSettings& s, Part
 /// is the plain SPH divergence (T_t = D − 1).
 template <int D, class Kernel>
 void continuum_surface_force(const Kernel& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
-                             const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors) {
+                             const FluidFields<D>& f, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
   const auto density = std::as_const(fluid)[f.density];
   const auto gradient = std::as_const(fluid)[f.colour_gradient];
-  auto acceleration = fluid[f.acceleration];
+  const auto acceleration = std::as_const(fluid)[f.acceleration];
   const Real threshold2 = s.normal_threshold * s.normal_threshold;
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    const Vector<D> n_i = gradient[i];
-    const Real norm2_i = squared_norm<D>(n_i);
-    if (!(norm2_i > threshold2)) return;
-    const Vector<D> unit_i = n_i / std::sqrt(norm2_i);
-    Real divergence = 0;
-    Real normalisation = 0;
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      if (j == i) return;
-      const Vector<D> n_j = gradient[j];
-      const Real norm2_j = squared_norm<D>(n_j);
-      if (!(norm2_j > threshold2)) return;
-      const Real r = std::sqrt(r2);
-      const Vector<D> grad_w = kernel.gradient(x_ij, r);
-      const Real volume_j = mass[j] / density[j];
-      const Real along_normal = x_ij.dot(unit_i);
-      divergence += volume_j * (n_j / std::sqrt(norm2_j) - unit_i).dot(grad_w);
-      normalisation += volume_j * grad_w.norm() * (r2 - along_normal * along_normal) / r;
-    });
-    if (!(normalisation > 0)) return;
-    const Real curvature = -Real(D - 1) * divergence / normalisation;
-    acceleration.set(i, acceleration[i] + (s.coefficient * curvature * s.density_scale) * n_i);
-  });
+  for_each_fluid_particle<D>(interactions, x, VectorOutput<D>{fluid[f.acceleration]},
+                             [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+                               const Vector<D> n_i = gradient[i];
+                               const Real norm2_i = squared_norm<D>(n_i);
+                               if (!(norm2_i > threshold2)) return acceleration[i];
+                               const Vector<D> unit_i = n_i / std::sqrt(norm2_i);
+                               Real divergence = 0;
+                               Real normalisation = 0;
+                               neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
+                                 if (j == i) return;
+                                 const Vector<D> n_j = gradient[j];
+                                 const Real norm2_j = squared_norm<D>(n_j);
+                                 if (!(norm2_j > threshold2)) return;
+                                 const Real r = std::sqrt(r2);
+                                 const Vector<D> grad_w = kernel.gradient(x_ij, r);
+                                 const Real volume_j = mass[j] / density[j];
+                                 const Real along_normal = x_ij.dot(unit_i);
+                                 divergence += volume_j * (n_j / std::sqrt(norm2_j) - unit_i).dot(grad_w);
+                                 normalisation += volume_j * grad_w.norm() * (r2 - along_normal * along_normal) / r;
+                               });
+                               if (!(normalisation > 0)) return acceleration[i];
+                               const Real curvature = -Real(D - 1) * divergence / normalisation;
+                               return Vector<D>(acceleration[i] + (s.coefficient * curvature * s.density_scale) * n_i);
+                             });
 }
 
 /// Surface normal of Akinci et al. 2013 (eq. 5): n_i = R Σ_j V_j ∇W_ij over neighbours of i's
 /// own phase; large only at the phase's surface.
 template <int D, class Kernel>
 void akinci_normal(const Kernel& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
-                   const FluidFields<D>& f, std::span<const Index> phase, const FluidWallNeighbors<D>& neighbors) {
+                   const FluidFields<D>& f, std::span<const Index> phase, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
   const auto density = std::as_const(fluid)[f.density];
-  auto normal = fluid[f.colour_gradient];
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    const Index phase_i = detail::phase_of(phase, i);
-    Vector<D> n = Vector<D>::Zero();
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      if (j == i || detail::phase_of(phase, j) != phase_i) return;
-      n += (mass[j] / density[j]) * kernel.gradient(x_ij, std::sqrt(r2));
-    });
-    normal.set(i, s.support_radius * n);
-  });
+  for_each_fluid_particle<D>(interactions, x, VectorOutput<D>{fluid[f.colour_gradient]},
+                             [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+                               const Index phase_i = detail::phase_of(phase, i);
+                               Vector<D> n = Vector<D>::Zero();
+                               neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
+                                 if (j == i || detail::phase_of(phase, j) != phase_i) return;
+                                 n += (mass[j] / density[j]) * kernel.gradient(x_ij, std::sqrt(r2));
+                               });
+                               return Vector<D>(s.support_radius * n);
+                             });
 }
 
 /// Akinci et al. 2013: cohesion −γ m_j C(r_ij) x̂_ij (eq. 1) and surface-area minimisation
 /// −γ (n_i − n_j) (eq. 4) from neighbours of i's own phase, each pair scaled by
 /// K_ij = 2 ρ0 / (ρ_i + ρ_j) (eq. 6), which strengthens the pull on the thinned-out surface; and
-/// adhesion to walls −β Ψ_b A(r_ib) x̂_ib (eq. 7) with Ψ_b = ρ0 V_b (Akinci et al. 2012).
+/// adhesion to wall contacts −β Ψ_b A(r_ib) x̂_ib (eq. 7) with Ψ_b = ρ0 V_b (Akinci et al. 2012).
 /// All per unit mass of i.
 template <int D, class Kernel>
 void akinci_surface_force(const Kernel&, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
-                          const FluidFields<D>& f, std::span<const Index> phase, const FluidWallNeighbors<D>& neighbors,
-                          const ParticleSet<D>& walls, const WallFields<D>& w) {
+                          const FluidFields<D>& f, std::span<const Index> phase, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
   const auto density = std::as_const(fluid)[f.density];
   const auto normal = std::as_const(fluid)[f.colour_gradient];
-  const auto wall_x = walls[w.position];
-  auto acceleration = fluid[f.acceleration];
+  const auto acceleration = std::as_const(fluid)[f.acceleration];
   const Real radius = s.support_radius;
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    const Index phase_i = detail::phase_of(phase, i);
-    const Real rho0 = s.rest_density[phase_i];
-    const Vector<D> n_i = normal[i];
-    Vector<D> a = Vector<D>::Zero();
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      if (j == i || detail::phase_of(phase, j) != phase_i) return;
-      const Real r = std::sqrt(r2);
-      const Real k_ij = 2 * rho0 / (density[i] + density[j]);
-      const Vector<D> cohesion = (-mass[j] * detail::akinci_cohesion(r, radius, s.cohesion_scale) / r) * x_ij;
-      a += (s.coefficient * k_ij) * (cohesion - (n_i - normal[j]));
-    });
-    if (s.adhesion > 0) {
-      const Real psi = rho0 * s.wall_volume;
-      neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index, const Vector<D>& x_ib, Real r2) {
-        const Real r = std::sqrt(r2);
-        a -= (s.adhesion * psi * detail::akinci_adhesion(r, radius, s.adhesion_scale) / r) * x_ib;
+  for_each_fluid_particle<D>(
+      interactions, x, VectorOutput<D>{fluid[f.acceleration]}, [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+        const Index phase_i = detail::phase_of(phase, i);
+        const Real rho0 = s.rest_density[phase_i];
+        const Vector<D> n_i = normal[i];
+        Vector<D> a = Vector<D>::Zero();
+        neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
+          if (j == i || detail::phase_of(phase, j) != phase_i) return;
+          const Real r = std::sqrt(r2);
+          const Real k_ij = 2 * rho0 / (density[i] + density[j]);
+          const Vector<D> cohesion = (-mass[j] * detail::akinci_cohesion(r, radius, s.cohesion_scale) / r) * x_ij;
+          a += (s.coefficient * k_ij) * (cohesion - (n_i - normal[j]));
+        });
+        if (s.adhesion > 0) {
+          const Real psi = rho0 * s.wall_volume;
+          neighbors.contacts([&](const ContactNeighbors<D>& contact) {
+            if (contact.contact().role() != ContactRole::wall) return;
+            contact.pairs([&](Index, const Vector<D>& x_ib, Real r2) {
+              const Real r = std::sqrt(r2);
+              a -= (s.adhesion * psi * detail::akinci_adhesion(r, radius, s.adhesion_scale) / r) * x_ib;
+            });
+          });
+        }
+        return Vector<D>(acceleration[i] + a);
       });
-    }
-    acceleration.set(i, acceleration[i] + a);
-  });
 }
 
 /// Pairwise inter-particle forces of Tartakovsky & Meakin 2005 (eq. 9): F_ij = s_ab cos(3π r/(2R))
 /// x̂_ij for r ≤ R, repulsive below R/3 and cohesive beyond, with a strength s_ab for each pair of
-/// phases and s_aw against wall particles; a_i = Σ F_ij / m_i. How the strengths follow from σ
+/// phases and s_aw against the particles of wall contacts; a_i = Σ F_ij / m_i. How the strengths follow from σ
 /// and the contact angle: pairwise_strengths (surface_tension_setup.cpp).
 template <int D, class Kernel>
 void pairwise_surface_force(const Kernel&, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
                             const FluidFields<D>& f, std::span<const Index> phase,
-                            const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls,
-                            const WallFields<D>& w) {
+                            const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
-  const auto wall_x = walls[w.position];
-  auto acceleration = fluid[f.acceleration];
+  const auto acceleration = std::as_const(fluid)[f.acceleration];
   const Real wave = Real(1.5) * std::numbers::pi_v<Real> / s.support_radius;
-  for_each_particle(fluid.size(), [&](std::size_t i) {
-    const Index phase_i = detail::phase_of(phase, i);
-    const Real* strength = s.pair_strength.data() + phase_i * s.phase_count;
-    Vector<D> force = Vector<D>::Zero();
-    neighbors.for_each_fluid_neighbor(i, x, [&](Index j, const Vector<D>& x_ij, Real r2) {
-      if (j == i) return;
-      const Real r = std::sqrt(r2);
-      force += (strength[detail::phase_of(phase, j)] * std::cos(wave * r) / r) * x_ij;
-    });
-    const Real wall_strength = s.wall_strength[phase_i];
-    if (wall_strength != 0) {
-      neighbors.for_each_wall_neighbor(i, x, wall_x, [&](Index, const Vector<D>& x_ib, Real r2) {
-        const Real r = std::sqrt(r2);
-        force += (wall_strength * std::cos(wave * r) / r) * x_ib;
-      });
-    }
-    acceleration.set(i, acceleration[i] + force / mass[i]);
-  });
+  for_each_fluid_particle<D>(interactions, x, VectorOutput<D>{fluid[f.acceleration]},
+                             [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+                               const Index phase_i = detail::phase_of(phase, i);
+                               const Real* strength = s.pair_strength.data() + phase_i * s.phase_count;
+                               Vector<D> force = Vector<D>::Zero();
+                               neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
+                                 if (j == i) return;
+                                 const Real r = std::sqrt(r2);
+                                 force += (strength[detail::phase_of(phase, j)] * std::cos(wave * r) / r) * x_ij;
+                               });
+                               const Real wall_strength = s.wall_strength[phase_i];
+                               if (wall_strength != 0) {
+                                 neighbors.contacts([&](const ContactNeighbors<D>& contact) {
+                                   if (contact.contact().role() != ContactRole::wall) return;
+                                   contact.pairs([&](Index, const Vector<D>& x_ib, Real r2) {
+                                     const Real r = std::sqrt(r2);
+                                     force += (wall_strength * std::cos(wave * r) / r) * x_ib;
+                                   });
+                                 });
+                               }
+                               return Vector<D>(acceleration[i] + force / mass[i]);
+                             });
 }
 
 /// The passes of `model`, in the order surface_tension runs them: what a scheme's pipeline lists.
@@ -235,20 +241,20 @@ inline std::vector<std::string_view> surface_tension_passes(scene::SurfaceTensio
 template <int D, class Kernel>
 void surface_tension(const Kernel& kernel, scene::SurfaceTensionModel model, const SurfaceTensionSettings& s,
                      ParticleSet<D>& fluid, const FluidFields<D>& f, std::span<const Index> phase,
-                     const FluidWallNeighbors<D>& neighbors, const ParticleSet<D>& walls, const WallFields<D>& w) {
+                     const Interactions<D>& interactions) {
   switch (model) {
     case scene::SurfaceTensionModel::none:
       break;
     case scene::SurfaceTensionModel::csf:
-      colour_gradient<D>(kernel, s, fluid, f, phase, neighbors);
-      continuum_surface_force<D>(kernel, s, fluid, f, neighbors);
+      colour_gradient<D>(kernel, s, fluid, f, phase, interactions);
+      continuum_surface_force<D>(kernel, s, fluid, f, interactions);
       break;
     case scene::SurfaceTensionModel::akinci:
-      akinci_normal<D>(kernel, s, fluid, f, phase, neighbors);
-      akinci_surface_force<D>(kernel, s, fluid, f, phase, neighbors, walls, w);
+      akinci_normal<D>(kernel, s, fluid, f, phase, interactions);
+      akinci_surface_force<D>(kernel, s, fluid, f, phase, interactions);
       break;
     case scene::SurfaceTensionModel::pairwise:
-      pairwise_surface_force<D>(kernel, s, fluid, f, phase, neighbors, walls, w);
+      pairwise_surface_force<D>(kernel, s, fluid, f, phase, interactions);
       break;
   }
 }

@@ -3,10 +3,14 @@
 // Wall-particle pressure, density and velocity from the adjacent fluid (Adami, Hu & Adams 2012).
 
 #include <algorithm>
+#include <cmath>
+#include <span>
+#include <utility>
 
+#include "neighbor_walk.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/equation_of_state.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
@@ -20,6 +24,31 @@ struct WallPressureExtrapolation {
   bool clamp_negative_pressure = true;
 };
 
+namespace detail {
+
+// What wall_state gives one wall particle, and where it stores it.
+template <int D>
+struct WallState {
+  Vector<D> velocity;
+  Real pressure = 0;
+  Real density = 0;
+};
+template <int D, bool WithVelocity>
+struct WallStateOutput {
+  VectorView<D> velocity;
+  std::span<Real> pressure;
+  std::span<Real> density;  // empty: the density is left as it is
+  bool with_pressure = true;
+  void set(std::size_t b, const WallState<D>& state) const {
+    if constexpr (WithVelocity) velocity.set(b, state.velocity);
+    if (!with_pressure) return;
+    pressure[b] = state.pressure;
+    if (!density.empty()) density[b] = state.density;
+  }
+};
+
+}  // namespace detail
+
 /// Adami, Hu & Adams 2012, eq. 27 for a wall that does not accelerate: p_w = (Σ_f p_f W_wf +
 /// g·Σ_f ρ_f x_wf W_wf) / Σ_f W_wf, and ρ_w from the equation of state (eq. 28). The velocity a
 /// no-slip wall shows the fluid mirrors the Shepard-averaged fluid velocity about the wall's
@@ -27,31 +56,33 @@ struct WallPressureExtrapolation {
 /// neighbour get p = 0 (plus the background pressure), ρ = ρ0, v = v_s. The fluid's pressure
 /// clamp applies to walls too: a wall particle beside the free surface can extrapolate to p < 0.
 /// Without `pressure_rule`, the velocity only (p and ρ of the walls are left as they are); the
-/// velocity only where the walls have that field (no-slip walls).
+/// velocity only where the walls have that field (no-slip walls). For one wall contact.
 template <int D, class Kernel>
-void wall_state(const Kernel& kernel, ParticleSet<D>& walls, const WallFields<D>& w, const ParticleSet<D>& fluid,
-                const FluidFields<D>& f, const FluidWallNeighbors<D>& neighbors,
+void wall_state(const Kernel& kernel, Contact<D>& walls, const ParticleSet<D>& fluid, const FluidFields<D>& f,
                 const WallPressureExtrapolation<D>* pressure_rule) {
-  const auto wall_x = std::as_const(walls)[w.position];
-  auto wall_pressure = walls[w.pressure];
-  auto wall_density = walls[w.density];
-  // Free-slip walls have no velocity field: no pass reads a wall velocity there.
-  const VectorView<D> wall_velocity = w.velocity ? walls[*w.velocity] : VectorView<D>{};
+  const WallFields<D>& w = walls.fields();
+  ParticleSet<D>& wall_set = walls.particles();
   const auto x = fluid[f.position];
   const auto v = fluid[f.velocity];
   const auto density = fluid[f.density];
   const auto pressure = fluid[f.pressure];
   const ConstVectorView<D> surface_velocity =
-      w.surface_velocity ? std::as_const(walls)[*w.surface_velocity] : ConstVectorView<D>{};
+      w.surface_velocity ? std::as_const(wall_set)[*w.surface_velocity] : ConstVectorView<D>{};
+  const EquationOfState* eos = pressure_rule ? pressure_rule->eos : nullptr;
   // Compiled with and without the velocity, chosen once: free-slip walls neither sum nor store it.
   const auto run = [&]<bool WithVelocity>() {
-    for_each_particle(walls.size(), [&](std::size_t b) {
+    const detail::WallStateOutput<D, WithVelocity> output{
+        // Free-slip walls have no velocity field: no pass reads a wall velocity there.
+        w.velocity ? wall_set[*w.velocity] : VectorView<D>{}, wall_set[w.pressure],
+        eos ? wall_set[w.density] : std::span<Real>{}, pressure_rule != nullptr};
+    for_each_contact_particle<D>(walls, x, output, [&](std::size_t b, const auto& fluid_pairs) {
+      detail::WallState<D> state;
       const Vector<D> own_velocity = w.surface_velocity ? surface_velocity[b] : Vector<D>::Zero();
       Real weight_sum = 0;
       Real pressure_sum = 0;
       Vector<D> hydrostatic_sum = Vector<D>::Zero();
       Vector<D> velocity_sum = Vector<D>::Zero();
-      neighbors.for_each_fluid_neighbor_of_wall(b, wall_x, x, [&](Index j, const Vector<D>& x_wf, Real r2) {
+      fluid_pairs([&](Index j, const Vector<D>& x_wf, Real r2) {
         const Real weight = kernel.value(std::sqrt(r2));
         weight_sum += weight;
         pressure_sum += pressure[j] * weight;
@@ -59,24 +90,35 @@ void wall_state(const Kernel& kernel, ParticleSet<D>& walls, const WallFields<D>
         if constexpr (WithVelocity) velocity_sum += weight * v[j];
       });
       if constexpr (WithVelocity)
-        wall_velocity.set(b, weight_sum > 0 ? Vector<D>(2 * own_velocity - velocity_sum / weight_sum) : own_velocity);
-      if (!pressure_rule) return;
-      const EquationOfState* eos = pressure_rule->eos;
+        state.velocity = weight_sum > 0 ? Vector<D>(2 * own_velocity - velocity_sum / weight_sum) : own_velocity;
+      if (!pressure_rule) return state;
       if (weight_sum > 0) {
         const Real extrapolated = (pressure_sum + pressure_rule->gravity.dot(hydrostatic_sum)) / weight_sum;
-        const Real p = pressure_rule->clamp_negative_pressure ? std::max(extrapolated, Real(0)) : extrapolated;
-        wall_pressure[b] = p;
-        if (eos) wall_density[b] = eos->density(p);
+        state.pressure = pressure_rule->clamp_negative_pressure ? std::max(extrapolated, Real(0)) : extrapolated;
+        if (eos) state.density = eos->density(state.pressure);
       } else {
-        wall_pressure[b] = eos ? eos->pressure(eos->rest_density()) : Real(0);
-        if (eos) wall_density[b] = eos->rest_density();
+        state.pressure = eos ? eos->pressure(eos->rest_density()) : Real(0);
+        if (eos) state.density = eos->rest_density();
       }
+      return state;
     });
   };
   if (w.velocity) {
     run.template operator()<true>();
   } else {
     run.template operator()<false>();
+  }
+}
+
+/// wall_state for every contact of `interactions` that is a wall, but (without `pressure_rule`,
+/// the velocity only) not for the walls without a velocity, which it would not change.
+template <int D, class Kernel>
+void wall_states(const Kernel& kernel, Interactions<D>& interactions, const ParticleSet<D>& fluid,
+                 const FluidFields<D>& f, const WallPressureExtrapolation<D>* pressure_rule) {
+  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+    Contact<D>& contact = interactions.contact(k);
+    if (contact.role() != ContactRole::wall || (!pressure_rule && !contact.viscous())) continue;
+    wall_state<D>(kernel, contact, fluid, f, pressure_rule);
   }
 }
 

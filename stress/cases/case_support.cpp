@@ -133,7 +133,7 @@ Pairing pairing(const Wcsph<D>& simulation, double spacing, double radius) {
     if (static_cast<double>(x[i].norm()) >= radius) continue;
     ++counted;
     double nearest2 = std::numeric_limits<double>::infinity();
-    simulation.fluid_grid().for_each_neighbor(i, x, [&](Index j, const Vector<D>&, Real r2) {
+    simulation.interactions().fluid_grid().for_each_neighbor(i, x, [&](Index j, const Vector<D>&, Real r2) {
       if (j != i) nearest2 = std::min(nearest2, static_cast<double>(r2));
     });
     const double nearest = std::sqrt(nearest2) / spacing;

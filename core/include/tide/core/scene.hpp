@@ -84,6 +84,7 @@ struct Container {
 struct Obstacle {
   std::variant<Box, Ball, Plane> shape;
   Vec velocity{};
+  std::optional<WallSlip> slip;  // unset: the walls' slip (Walls::slip)
 };
 
 /// Wall layers a kernel needs so that a fluid particle touching a wall has wall particles across

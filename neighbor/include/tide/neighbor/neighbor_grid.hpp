@@ -148,7 +148,7 @@ class NeighborGrid {
   /// removes particles outside the domain and rebuilds the cell table. Returns the number of
   /// particles removed by this call. The sort and the gather borrow their workspace
   /// (update_scratch_bytes) from the grid's own arena, or from `arena`, which a caller shares
-  /// with what it needs only after the update (FluidWallNeighbors: the fluid's neighbour list).
+  /// with what it needs only after the update (Interactions: the fluid's neighbour list).
   std::size_t update(ParticleSet<D>& particles);
   std::size_t update(ParticleSet<D>& particles, ScratchArena& arena);
 

@@ -8,8 +8,8 @@
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
 #include "tide/solvers/incompressible_scheme.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/phases.hpp"
 #include "tide/solvers/simulation.hpp"
@@ -49,11 +49,8 @@ class IncompressibleSph final : public Simulation<D> {
   double time() const override { return time_; }
   std::uint64_t step_count() const override { return step_count_; }
   const ParticleSet<D>& fluid() const override { return fluid_; }
-  const ParticleSet<D>& walls() const override { return walls_; }
   const FluidFields<D>& fluid_fields() const override { return fluid_fields_; }
-  const WallFields<D>& wall_fields() const override { return wall_fields_; }
-  const NeighborGrid<D>& fluid_grid() const override { return neighbors_.fluid_grid(); }
-  const NeighborGrid<D>& wall_grid() const override { return neighbors_.wall_grid(); }
+  const Interactions<D>& interactions() const override { return interactions_; }
   const AnyKernel<D>& kernel() const override { return kernel_; }
   Vector<D> gravity() const override { return gravity_; }
   Real rest_density() const override { return rest_density_; }
@@ -62,8 +59,8 @@ class IncompressibleSph final : public Simulation<D> {
   Real relaxation() const { return relaxation_; }
   Real smoothing_length() const override { return smoothing_length_; }
   Real max_speed() const override { return max_speed_; }
-  std::size_t removed_total() const override { return neighbors_.fluid_grid().removed_total(); }
-  std::size_t neighbor_builds() const override { return neighbors_.builds(); }
+  std::size_t removed_total() const override { return interactions_.fluid_grid().removed_total(); }
+  std::size_t neighbor_builds() const override { return interactions_.builds(); }
   const PassTimes& pass_times() const override { return pass_times_; }
   const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
   double bytes_per_particle() const override;
@@ -91,7 +88,6 @@ class IncompressibleSph final : public Simulation<D> {
   std::optional<Phases> phases_;
   TimeStepRule time_step_rule_;
   ParticleSet<D> fluid_;
-  ParticleSet<D> walls_;
   FluidFields<D> fluid_fields_;
   PressureSolveFields<D> solve_fields_;
   std::vector<Real> before_sweep_;   // p⁽ᵏ⁻¹⁾ of the Chebyshev recurrence; scratch of one solve, not sorted
@@ -99,8 +95,7 @@ class IncompressibleSph final : public Simulation<D> {
   // One fluid whose particles all have one mass, and walls of one mass: the sweeps read the masses
   // so (passes::NeighborMasses). Set with the gradient cache, after every neighbour update.
   bool uniform_masses_ = false;
-  WallFields<D> wall_fields_;
-  FluidWallNeighbors<D> neighbors_;
+  Interactions<D> interactions_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   Real max_speed_ = 0;

@@ -21,13 +21,14 @@ Vector<D> to_vector(const scene::Vec& v) {
 template <int D>
 Vector<D> lattice_anchor(const scene::Scene& scene);
 
-/// Sampled particles: positions and, index for index, velocities and (fluid only) the material
-/// of the block each came from.
+/// Sampled particles: positions and, index for index, velocities, (fluid only) the material of
+/// the block each came from and (walls only) what made it: 0 the container, k + 1 obstacle k.
 template <int D>
 struct ParticleSamples {
   std::vector<Vector<D>> positions;
   std::vector<Vector<D>> velocities;
   std::vector<std::size_t> materials;
+  std::vector<std::size_t> makers;
   std::size_t size() const { return positions.size(); }
 };
 

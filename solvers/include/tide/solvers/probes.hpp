@@ -35,7 +35,7 @@ Value shepard_interpolation(const Simulation<D>& simulation, const Vector<D>& po
   Real weight_sum = 0;
   std::visit(
       [&](const auto& kernel) {
-        simulation.fluid_grid().for_each_neighbor_of(
+        simulation.interactions().fluid_grid().for_each_neighbor_of(
             point, fluid[f.position], [&](Index j, const Vector<D>& x_pj, Real r2) {
               const Real weight = mass[j] / density[j] * kernel.value(std::sqrt(r2));
               weighted += weight * quantity(j, x_pj);

@@ -12,6 +12,7 @@
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/time_step.hpp"
 
@@ -83,11 +84,9 @@ class Simulation {
   virtual double time() const = 0;
   virtual std::uint64_t step_count() const = 0;
   virtual const ParticleSet<D>& fluid() const = 0;
-  virtual const ParticleSet<D>& walls() const = 0;
   virtual const FluidFields<D>& fluid_fields() const = 0;
-  virtual const WallFields<D>& wall_fields() const = 0;
-  virtual const NeighborGrid<D>& fluid_grid() const = 0;
-  virtual const NeighborGrid<D>& wall_grid() const = 0;
+  /// The fluid's neighbour relations: its own grid and lists, and every contact (walls, ...).
+  virtual const Interactions<D>& interactions() const = 0;
   virtual const AnyKernel<D>& kernel() const = 0;
   /// Gravity now: the scene's, or less while it is being raised (solver.gravity_ramp_time).
   virtual Vector<D> gravity() const = 0;

@@ -12,7 +12,7 @@
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/equation_of_state.hpp"
-#include "tide/solvers/fluid_wall_neighbors.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/phases.hpp"
 #include "tide/solvers/simulation.hpp"
@@ -44,20 +44,17 @@ class Wcsph final : public Simulation<D> {
   double time() const override { return time_; }
   std::uint64_t step_count() const override { return step_count_; }
   const ParticleSet<D>& fluid() const override { return fluid_; }
-  const ParticleSet<D>& walls() const override { return walls_; }
   const FluidFields<D>& fluid_fields() const override { return fluid_fields_; }
-  const WallFields<D>& wall_fields() const override { return wall_fields_; }
+  const Interactions<D>& interactions() const override { return interactions_; }
   const EquationOfState& equation_of_state() const { return eos_; }
   /// Gravity now: the scene's, or less while it is being raised (solver.gravity_ramp_time).
   Vector<D> gravity() const override;
-  const NeighborGrid<D>& fluid_grid() const override { return neighbors_.fluid_grid(); }
-  const NeighborGrid<D>& wall_grid() const override { return neighbors_.wall_grid(); }
   const AnyKernel<D>& kernel() const override { return kernel_; }
   Real rest_density() const override { return eos_.rest_density(); }
   Real smoothing_length() const override { return smoothing_length_; }
   Real max_speed() const override { return max_speed_; }
-  std::size_t removed_total() const override { return neighbors_.fluid_grid().removed_total(); }
-  std::size_t neighbor_builds() const override { return neighbors_.builds(); }
+  std::size_t removed_total() const override { return interactions_.fluid_grid().removed_total(); }
+  std::size_t neighbor_builds() const override { return interactions_.builds(); }
   const PassTimes& pass_times() const override { return pass_times_; }
   const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
   /// The phases of a multiphase scene; null for a single fluid.
@@ -65,15 +62,15 @@ class Wcsph final : public Simulation<D> {
   /// The pairwise model's force strength s_ab between phases a and b (Tartakovsky & Meakin 2005);
   /// 0 without it.
   Real pair_strength(Index a, Index b) const;
-  /// The pairwise model's force strength s_aw between phase a and the walls; 0 without it.
+  /// The pairwise model's force strength s_aw between phase a and the wall contacts; 0 without it.
   Real wall_strength(Index a) const;
   double bytes_per_particle() const override;
   MemoryUsage memory_usage() const override;
 
  private:
   void set_hydrostatic_density();
-  /// How neighbors_ lists the pairs after an update: by the density pass where it can.
-  typename FluidWallNeighbors<D>::Listing listing() const;
+  /// How interactions_ lists the pairs after an update: by the density pass where it can.
+  typename Interactions<D>::Listing listing() const;
   void compute_interactions(const Vector<D>& gravity);
   void add_surface_tension();
   void build_pipeline();
@@ -99,10 +96,8 @@ class Wcsph final : public Simulation<D> {
   std::vector<std::string_view> pipeline_;
   TimeStepRule time_step_rule_;
   ParticleSet<D> fluid_;
-  ParticleSet<D> walls_;
   FluidFields<D> fluid_fields_;
-  WallFields<D> wall_fields_;
-  FluidWallNeighbors<D> neighbors_;
+  Interactions<D> interactions_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   TimeStep last_time_step_;
