@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -23,6 +22,7 @@
 #include "tide/solvers/probes.hpp"
 #include "tide/solvers/recovery.hpp"
 #include "tide/solvers/simulation.hpp"
+#include "tide/solvers/stage_shares.hpp"
 
 namespace tide::app {
 namespace {
@@ -223,13 +223,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   std::printf("  time step   binding limit per step: %s\n", limit_counts(run_tally).c_str());
   print_solve_summary("density", run_solves.density);
   print_solve_summary("divergence", run_solves.divergence);
-  const PassTimes& times = simulation->pass_times();
-  const double total = std::max(times.total(), 1e-12);
-  std::printf(
-      "  passes      neighbour search %.0f%%, density %.0f%%, walls %.0f%%, momentum %.0f%%, pressure solve %.0f%%, "
-      "integration %.0f%%\n",
-      100 * times.neighbor_search / total, 100 * times.density / total, 100 * times.wall_state / total,
-      100 * times.momentum / total, 100 * times.pressure_solve / total, 100 * times.integration / total);
+  std::printf("  stages      %s\n", format_stage_shares(simulation->pipeline().times()).c_str());
   std::printf("  output      %zu frames, %s\n", writer.frames_written(), writer.xdmf_path().string().c_str());
   for (const auto& recorder : series) {
     std::printf("  series      %zu rows, %s\n", recorder.writer().rows(), recorder.writer().path().string().c_str());

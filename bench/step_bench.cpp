@@ -45,13 +45,14 @@
 //                     steps less the same baseline: B/particle plus what a step allocates and frees.
 //                     Both are per process: filter one benchmark for a clean figure
 //   f_nbr, f_density, f_wall, f_momentum, f_solve, f_integr, f_shift
-//                     share of the step in each part, from Simulation::pass_times(): neighbour
-//                     search (sort, reorder, cell tables, neighbour lists; for WCSPH with a skin and
-//                     summation density also that density, summed as the lists are refined),
-//                     density (+ EOS; for the incompressible schemes + the pressure factor), wall
-//                     state, momentum
-//                     (incompressible: the non-pressure forces), the pressure solves, integration
-//                     (kicks, drift, state check), particle shifting; f_other = 1 - their sum
+//                     share of the step in each part, summed over the stages of
+//                     Simulation::pipeline() (step_part): neighbour search (sort, reorder, cell
+//                     tables, neighbour lists; for WCSPH with a skin and summation density also
+//                     that density, one stage with the search as it lists the pairs), density
+//                     (+ EOS; for the incompressible schemes + gradient cache and pressure factor),
+//                     wall state, momentum (incompressible: the non-pressure forces), the pressure
+//                     solves, integration (kicks, drift, inflow, time, state checks), particle
+//                     shifting; f_other = 1 - their sum (surface tension, and the time step's choice)
 //   density_iter, divergence_iter   mean iterations per step of the incompressible solves
 //   sim_s/step        mean simulated seconds per step; wall_per_sim_s = wall seconds per simulated
 //                     second (what a fixed-duration run costs)
@@ -65,6 +66,7 @@
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -72,9 +74,11 @@
 #include <cstdlib>
 #include <exception>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -95,6 +99,25 @@ using tide::bench::sized_dam_break;
 namespace scene = tide::scene;
 
 constexpr int warmup_steps = 20;
+
+// The f_* counter a stage of Simulation::pipeline() counts in; null for f_other.
+const char* step_part(std::string_view stage) {
+  const auto any_of = [&](std::initializer_list<std::string_view> names) {
+    return std::find(names.begin(), names.end(), stage) != names.end();
+  };
+  if (stage.starts_with("neighbor_search")) return "f_nbr";
+  if (any_of({"continuity", "equation_of_state", "density_summation", "number_density", "gradient_cache",
+              "pressure_factor"}))
+    return "f_density";
+  if (stage == "wall_state") return "f_wall";
+  if (any_of({"momentum", "non_pressure_momentum"})) return "f_momentum";
+  if (any_of({"density_solve", "divergence_solve"})) return "f_solve";
+  if (any_of({"kick_drift", "inflow_drift", "inflow_phase", "kick", "inflow_velocity", "predict_velocity", "drift",
+              "advance_time", "state_check_before_drift", "state_check"}))
+    return "f_integr";
+  if (stage == "particle_shifting") return "f_shift";
+  return nullptr;
+}
 
 double process_cpu_seconds() {
   rusage usage{};
@@ -134,7 +157,7 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads, dou
     const bool peak_reset = tide::bench::reset_peak_resident_memory();
     const std::size_t builds_before = simulation.neighbor_builds();
 
-    const tide::PassTimes before = simulation.pass_times();
+    const std::vector<tide::StageTime> before = simulation.pipeline().times();
     const double time_before = simulation.time();
     std::size_t density_iterations = 0;
     std::size_t divergence_iterations = 0;
@@ -149,7 +172,7 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads, dou
     const double wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double cpu_seconds = process_cpu_seconds() - cpu_start;
     const tide::bench::ResidentMemory resident = tide::bench::resident_memory();
-    const tide::PassTimes after = simulation.pass_times();
+    const std::vector<tide::StageTime> after = simulation.pipeline().times();
     if (simulation.removed_total() != 0) {
       state.SkipWithError("particles left the domain");
       return;
@@ -177,16 +200,16 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads, dou
     state.counters["B_lists"] = Counter(rest / fluid);
     state.counters["RSS_B/particle"] = Counter((double(resident.current) - double(baseline)) / fluid);
     if (peak_reset) state.counters["peak_RSS_B/particle"] = Counter((double(resident.peak) - double(baseline)) / fluid);
-    const auto share = [&](const char* name, double tide::PassTimes::*part) {
-      const double f = (after.*part - before.*part) / wall_seconds;
-      state.counters[name] = Counter(f);
-      return f;
-    };
-    const double accounted =
-        share("f_nbr", &tide::PassTimes::neighbor_search) + share("f_density", &tide::PassTimes::density) +
-        share("f_wall", &tide::PassTimes::wall_state) + share("f_momentum", &tide::PassTimes::momentum) +
-        share("f_solve", &tide::PassTimes::pressure_solve) + share("f_integr", &tide::PassTimes::integration) +
-        share("f_shift", &tide::PassTimes::shifting);
+    for (const char* part : {"f_nbr", "f_density", "f_wall", "f_momentum", "f_solve", "f_integr", "f_shift"})
+      state.counters[part] = Counter(0);
+    double accounted = 0;
+    for (std::size_t k = 0; k < after.size(); ++k) {
+      const char* part = step_part(after[k].name);
+      if (part == nullptr) continue;
+      const double f = (after[k].seconds - before[k].seconds) / wall_seconds;
+      state.counters[part].value += f;
+      accounted += f;
+    }
     state.counters["f_other"] = Counter(1 - accounted);
     state.counters["density_iter"] = Counter(double(density_iterations) / steps);
     state.counters["divergence_iter"] = Counter(double(divergence_iterations) / steps);

@@ -1,7 +1,6 @@
 #include "tide/solvers/incompressible_sph.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -28,8 +27,6 @@
 
 namespace tide {
 namespace {
-
-using setup::lap;
 
 // Iterations each solve makes at least: two for the density solve, one for the divergence solve
 // (the loop conditions of Ihmsen et al. 2014, Alg. 1, and Bender & Koschier 2017, Alg. 2–3).
@@ -142,40 +139,115 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
   time_ = scene.time.start;
 
-  interactions_.update(fluid_);
-  compute_density_and_factor();
-  compute_non_pressure_acceleration();
+  std::vector<Stage> start{neighbor_search_stage()};
+  for (Stage& stage : density_stages()) start.push_back(std::move(stage));
+  for (Stage& stage : force_stages()) start.push_back(std::move(stage));
+  StepContext at_start;
+  Pipeline(std::move(start)).run(at_start);
   check_state();
-  pipeline_ = {"predict_velocity", "density_solve", "state_check", "drift"};
-  if (scene.solver.shifting != scene::Shifting::none)
-    pipeline_.insert(pipeline_.end(), {"position_divergence", "particle_shifting"});
-  pipeline_.insert(pipeline_.end(),
-                   {"neighbor_search", phases_ ? "number_density" : "density_summation", "pressure_factor"});
-  if (scheme_.divergence_solve) pipeline_.push_back("divergence_solve");
-  if (scene.walls.slip == scene::WallSlip::no_slip) pipeline_.push_back("wall_state");
-  pipeline_.insert(pipeline_.end(), {"non_pressure_momentum", "state_check"});
+  pipeline_ = build_pipeline();
 }
 
 template <int D>
-void IncompressibleSph<D>::compute_density_and_factor() {
+Pipeline IncompressibleSph<D>::build_pipeline() {
+  std::vector<Stage> stages;
+  stages.push_back({"predict_velocity", [this](StepContext& c) { predict_velocity(c.dt); }});
+  stages.push_back({"density_solve", [this](StepContext& c) {
+                      c.report.density_solve =
+                          solve(fluid_fields_.pressure, Target::density, scheme_.warm_start, gravity_, c.dt);
+                    }});
+  // A solve that diverged leaves velocities that would carry particles out of the domain in the
+  // drift, where the neighbour search would remove them as lost: the state is checked first.
+  stages.push_back({"state_check_before_drift", [this](StepContext&) { check_state(); }});
+  stages.push_back({"drift", [this](StepContext& c) { drift(c.dt); }});
+  if (scene_.solver.shifting != scene::Shifting::none)
+    stages.push_back({"particle_shifting", [this](StepContext& c) { shift_particles(c.dt); }});
+  stages.push_back(neighbor_search_stage());
+  for (Stage& stage : density_stages()) stages.push_back(std::move(stage));
+  if (scheme_.divergence_solve) {
+    stages.push_back(
+        {"divergence_solve", [this](StepContext& c) { c.report.divergence_solve = solve_divergence(c.dt); }});
+  }
+  stages.push_back({"advance_time", [this](StepContext& c) {
+                      time_ += c.dt;
+                      ++step_count_;
+                      gravity_ = setup::gravity_at<D>(scene_, time_);
+                    }});
+  for (Stage& stage : force_stages()) stages.push_back(std::move(stage));
+  stages.push_back({"state_check", [this](StepContext& c) {
+                      check_state();
+                      count_failures(c.report);
+                    }});
+  return Pipeline(std::move(stages));
+}
+
+template <int D>
+Stage IncompressibleSph<D>::neighbor_search_stage() {
+  return {"neighbor_search", [this](StepContext& c) { c.report.removed = interactions_.update(fluid_); }};
+}
+
+template <int D>
+std::vector<Stage> IncompressibleSph<D>::density_stages() {
+  std::vector<Stage> stages;
+  stages.push_back({"gradient_cache", [this](StepContext&) { cache_gradients(); }});
+  stages.push_back({phases_ ? "number_density" : "density_summation", [this](StepContext&) { sum_density(); }});
+  stages.push_back({"pressure_factor", [this](StepContext&) { compute_pressure_factor(); }});
+  return stages;
+}
+
+template <int D>
+std::vector<Stage> IncompressibleSph<D>::force_stages() {
+  std::vector<Stage> stages;
+  // Free-slip walls take no viscous force, so their velocity is not needed.
+  if (interactions_.has_viscous_contact())
+    stages.push_back({"wall_state", [this](StepContext&) { extrapolate_wall_velocity(); }});
+  stages.push_back({"non_pressure_momentum", [this](StepContext&) { compute_non_pressure_acceleration(); }});
+  return stages;
+}
+
+template <int D>
+void IncompressibleSph<D>::cache_gradients() {
+  std::visit(
+      [&](const auto& kernel) { interactions_.cache_gradients(kernel, std::as_const(fluid_)[fluid_fields_.position]); },
+      kernel_);
+  uniform_masses_ = !phases_ && passes::masses_are_uniform(std::as_const(fluid_)[fluid_fields_.mass]);
+  for (std::size_t k = 0; k < interactions_.contact_count(); ++k) {
+    const Contact<D>& contact = interactions_.contact(k);
+    uniform_masses_ = uniform_masses_ && passes::masses_are_uniform(contact.particles()[contact.fields().mass]);
+  }
+}
+
+template <int D>
+void IncompressibleSph<D>::sum_density() {
   std::visit(
       [&](const auto& kernel) {
-        interactions_.cache_gradients(kernel, std::as_const(fluid_)[fluid_fields_.position]);
-        uniform_masses_ = !phases_ && passes::masses_are_uniform(std::as_const(fluid_)[fluid_fields_.mass]);
-        for (std::size_t k = 0; k < interactions_.contact_count(); ++k) {
-          const Contact<D>& contact = interactions_.contact(k);
-          uniform_masses_ = uniform_masses_ && passes::masses_are_uniform(contact.particles()[contact.fields().mass]);
-        }
         const auto nothing_more = [](std::size_t, Real) {};
         if (phases_) {
           passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, interactions_, nothing_more);
-          passes::pressure_factor<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, interactions_);
         } else {
           passes::density_summation<D>(kernel, fluid_, fluid_fields_, interactions_, nothing_more);
+        }
+      },
+      kernel_);
+}
+
+template <int D>
+void IncompressibleSph<D>::compute_pressure_factor() {
+  std::visit(
+      [&](const auto& kernel) {
+        if (phases_) {
+          passes::pressure_factor<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, interactions_);
+        } else {
           passes::pressure_factor<D>(kernel, fluid_, fluid_fields_, solve_fields_, interactions_);
         }
       },
       kernel_);
+}
+
+template <int D>
+void IncompressibleSph<D>::extrapolate_wall_velocity() {
+  std::visit([&](const auto& kernel) { passes::wall_states<D>(kernel, interactions_, fluid_, fluid_fields_, nullptr); },
+             kernel_);
 }
 
 template <int D>
@@ -189,14 +261,10 @@ void IncompressibleSph<D>::compute_non_pressure_acceleration() {
     for (const Phase& p : phases_->table) dynamic_viscosity.push_back(p.dynamic_viscosity);
     multiphase = {phase, dynamic_viscosity, setup::wall_volume<D>(interactions_, rest_density_)};
   }
-  auto clock = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& kernel) {
-        passes::wall_states<D>(kernel, interactions_, fluid_, fluid_fields_, nullptr);
-        lap(clock, pass_times_.wall_state);
         passes::fluid_acceleration<D, false>(kernel, viscosity, {}, fluid_, fluid_fields_, interactions_, gravity_, {},
                                              phases_ ? &multiphase : nullptr);
-        lap(clock, pass_times_.momentum);
       },
       kernel_);
 }
@@ -358,58 +426,45 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
 
 template <int D>
 StepReport IncompressibleSph<D>::step() {
-  StepReport report;
-  report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
-  const Real dt = report.time_step.dt;
-  auto clock = std::chrono::steady_clock::now();
-  {
-    auto predicted = fluid_[solve_fields_.predicted_velocity];
-    const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
-    const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
-    for_each_particle(fluid_.size(), [&](std::size_t i) { predicted.set(i, v[i] + dt * a[i]); });
-  }
-  lap(clock, pass_times_.integration);
-  report.density_solve = solve(fluid_fields_.pressure, Target::density, scheme_.warm_start, gravity_, dt);
-  lap(clock, pass_times_.pressure_solve);
-  // A solve that diverged leaves velocities that would carry particles out of the domain in the
-  // drift, where the neighbour search would remove them as lost: the state is checked first.
-  check_state();
-  {
-    auto x = fluid_[fluid_fields_.position];
-    const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
-    for_each_particle(fluid_.size(), [&](std::size_t i) { x.set(i, x[i] + dt * v[i]); });
-  }
-  lap(clock, pass_times_.integration);
-  if (scene_.solver.shifting != scene::Shifting::none) {
-    std::visit(
-        [&](const auto& kernel) {
-          passes::shift_particles<D>(kernel, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_,
-                                     dt, fluid_, fluid_fields_, interactions_);
-        },
-        kernel_);
-    lap(clock, pass_times_.shifting);
-  }
-  report.removed = interactions_.update(fluid_);
-  lap(clock, pass_times_.neighbor_search);
-  compute_density_and_factor();
-  lap(clock, pass_times_.density);
-  if (scheme_.divergence_solve) {
-    auto predicted = fluid_[solve_fields_.predicted_velocity];
-    const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
-    for_each_particle(fluid_.size(), [&](std::size_t i) { predicted.set(i, v[i]); });
-    report.divergence_solve = solve(solve_fields_.divergence_pressure, Target::divergence,
-                                    scheme_.divergence_warm_start, Vector<D>::Zero(), dt);
-    lap(clock, pass_times_.pressure_solve);
-  }
-  time_ += dt;
-  ++step_count_;
-  gravity_ = setup::gravity_at<D>(scene_, time_);
-  compute_non_pressure_acceleration();
-  clock = std::chrono::steady_clock::now();
-  check_state();
-  count_failures(report);
-  lap(clock, pass_times_.integration);
-  return report;
+  StepContext context;
+  context.report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
+  context.dt = context.report.time_step.dt;
+  pipeline_.run(context);
+  return context.report;
+}
+
+template <int D>
+void IncompressibleSph<D>::predict_velocity(Real dt) {
+  auto predicted = fluid_[solve_fields_.predicted_velocity];
+  const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
+  const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
+  for_each_particle(fluid_.size(), [&](std::size_t i) { predicted.set(i, v[i] + dt * a[i]); });
+}
+
+template <int D>
+void IncompressibleSph<D>::drift(Real dt) {
+  auto x = fluid_[fluid_fields_.position];
+  const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
+  for_each_particle(fluid_.size(), [&](std::size_t i) { x.set(i, x[i] + dt * v[i]); });
+}
+
+template <int D>
+void IncompressibleSph<D>::shift_particles(Real dt) {
+  std::visit(
+      [&](const auto& kernel) {
+        passes::shift_particles<D>(kernel, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_,
+                                   dt, fluid_, fluid_fields_, interactions_);
+      },
+      kernel_);
+}
+
+template <int D>
+SolveReport IncompressibleSph<D>::solve_divergence(Real dt) {
+  auto predicted = fluid_[solve_fields_.predicted_velocity];
+  const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
+  for_each_particle(fluid_.size(), [&](std::size_t i) { predicted.set(i, v[i]); });
+  return solve(solve_fields_.divergence_pressure, Target::divergence, scheme_.divergence_warm_start, Vector<D>::Zero(),
+               dt);
 }
 
 template <int D>

@@ -4,7 +4,6 @@
 // fluid and wall particles with their fields and mass, the gravity ramp, and the pass clock.
 
 #include <algorithm>
-#include <chrono>
 #include <span>
 #include <string>
 
@@ -114,12 +113,5 @@ double bytes_per_particle(const ParticleSet<D>& fluid, const Interactions<D>& in
 
 /// Six significant digits, for messages.
 std::string format_number(double value);
-
-/// Adds the seconds since `start` to `total` and restarts the clock.
-inline void lap(std::chrono::steady_clock::time_point& start, double& total) {
-  const auto now = std::chrono::steady_clock::now();
-  total += std::chrono::duration<double>(now - start).count();
-  start = now;
-}
 
 }  // namespace tide::setup

@@ -1,7 +1,6 @@
 #include "tide/solvers/wcsph.hpp"
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -27,7 +26,6 @@
 namespace tide {
 
 using setup::format_number;
-using setup::lap;
 
 template <int D>
 Wcsph<D>::Wcsph(const scene::Scene& scene)
@@ -70,35 +68,87 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
   time_ = scene.time.start;
 
-  build_pipeline();
-  interactions_.update(fluid_, listing());
-  compute_interactions(setup::gravity_at<D>(scene_, time_));
+  std::vector<Stage> start{neighbor_search_stage()};
+  for (Stage& stage : force_stages()) start.push_back(std::move(stage));
+  StepContext at_start;  // dt = 0: the forces at the start time
+  Pipeline(std::move(start)).run(at_start);
   check_state();
+  pipeline_ = build_pipeline();
 }
 
 template <int D>
 Wcsph<D>::~Wcsph() = default;
 
 template <int D>
-void Wcsph<D>::build_pipeline() {
-  const scene::Solver& solver = scene_.solver;
-  pipeline_ = {"kick_drift"};
-  if (scene_.domain.inflow) pipeline_.push_back("inflow_drift");
-  if (injects_phase()) pipeline_.push_back("inflow_phase");
-  pipeline_.push_back("neighbor_search");
-  if (solver.density == scene::DensityMethod::continuity) {
-    pipeline_.insert(pipeline_.end(), {"continuity", "equation_of_state"});
-  } else {
-    pipeline_.push_back(phases_ ? "number_density" : "density_summation");
+Pipeline Wcsph<D>::build_pipeline() {
+  std::vector<Stage> stages;
+  stages.push_back({"kick_drift", [this](StepContext& c) { kick_drift(c.dt); }});
+  if (scene_.domain.inflow) stages.push_back({"inflow_drift", [this](StepContext& c) { impose_inflow(c.dt); }});
+  if (injects_phase()) stages.push_back({"inflow_phase", [this](StepContext&) { inject_phase(); }});
+  stages.push_back(neighbor_search_stage());
+  if (scene_.solver.density == scene::DensityMethod::continuity)
+    stages.push_back({"continuity", [this](StepContext& c) { integrate_density(step_gravity(c), c.dt); }});
+  for (Stage& stage : force_stages()) stages.push_back(std::move(stage));
+  stages.push_back({"kick", [this](StepContext& c) { kick(c.dt); }});
+  if (scene_.domain.inflow) stages.push_back({"inflow_velocity", [this](StepContext&) { impose_inflow(0); }});
+  stages.push_back({"advance_time", [this](StepContext& c) {
+                      time_ += c.dt;
+                      ++step_count_;
+                    }});
+  stages.push_back({"state_check", [this](StepContext&) { check_state(); }});
+  if (scene_.solver.shifting != scene::Shifting::none)
+    stages.push_back({"particle_shifting", [this](StepContext& c) { shift_particles(c.dt); }});
+  return Pipeline(std::move(stages));
+}
+
+template <int D>
+Stage Wcsph<D>::neighbor_search_stage() {
+  const auto search = [this](StepContext& c) { c.report.removed = interactions_.update(fluid_, listing()); };
+  if (!density_lists_neighbors()) return {"neighbor_search", search};
+  // The density pass lists the pairs as it walks them: the two cannot be timed apart.
+  return {std::string("neighbor_search+").append(density_pass_name()), [this, search](StepContext& c) {
+            search(c);
+            sum_density();
+          }};
+}
+
+template <int D>
+std::vector<Stage> Wcsph<D>::force_stages() {
+  std::vector<Stage> stages;
+  if (scene_.solver.density == scene::DensityMethod::continuity) {
+    stages.push_back({"equation_of_state", [this](StepContext&) { apply_equation_of_state(); }});
+  } else if (!density_lists_neighbors()) {
+    stages.push_back({std::string(density_pass_name()), [this](StepContext&) { sum_density(); }});
   }
-  pipeline_.insert(pipeline_.end(), {"wall_state", "momentum"});
-  for (const std::string_view pass : passes::surface_tension_passes(solver.surface_tension.model))
-    pipeline_.push_back(pass);
-  pipeline_.push_back("kick");
-  if (scene_.domain.inflow) pipeline_.push_back("inflow_velocity");
-  pipeline_.push_back("state_check");
-  if (solver.shifting != scene::Shifting::none)
-    pipeline_.insert(pipeline_.end(), {"position_divergence", "particle_shifting"});
+  if (interactions_.contact_count() > 0)
+    stages.push_back({"wall_state", [this](StepContext& c) { extrapolate_wall_state(step_gravity(c)); }});
+  stages.push_back({"momentum", [this](StepContext& c) { compute_acceleration(step_gravity(c)); }});
+  if (tension_) {
+    std::string name;
+    for (const std::string_view pass : passes::surface_tension_passes(scene_.solver.surface_tension.model)) {
+      if (!name.empty()) name += '+';
+      name += pass;
+    }
+    stages.push_back({name, [this](StepContext&) { add_surface_tension(); }});
+  }
+  return stages;
+}
+
+template <int D>
+bool Wcsph<D>::density_lists_neighbors() const {
+  // As Interactions::update leaves the listing to the next pair walk.
+  return interactions_.fluid_grid().skin() > 0 && listing() == Interactions<D>::Listing::in_next_pair_walk;
+}
+
+template <int D>
+std::string_view Wcsph<D>::density_pass_name() const {
+  return phases_ ? "number_density" : "density_summation";
+}
+
+template <int D>
+Vector<D> Wcsph<D>::step_gravity(const StepContext& context) const {
+  // The forces of a step use the gravity at its end: time_ is the start until advance_time.
+  return setup::gravity_at<D>(scene_, time_ + context.dt);
 }
 
 template <int D>
@@ -126,22 +176,55 @@ void Wcsph<D>::set_hydrostatic_density() {
 }
 
 template <int D>
-void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
+Real Wcsph<D>::pressure_at(const EquationOfState& eos, Real rho) const {
+  const Real p = eos.pressure(rho);
+  return scene_.solver.clamp_negative_pressure ? std::max(p, Real(0)) : p;
+}
+
+template <int D>
+void Wcsph<D>::sum_density() {
+  auto pressure = fluid_[fluid_fields_.pressure];
+  const auto set_pressure = [&](std::size_t i, Real rho) { pressure[i] = pressure_at(eos_, rho); };
+  const auto set_phase_pressure = [&, phase = phases_ ? std::as_const(fluid_)[fluid_fields_.phase]
+                                                      : std::span<const Index>{}](std::size_t i, Real rho) {
+    pressure[i] = pressure_at(phases_->table[phase[i]].eos, rho);
+  };
+  std::visit(
+      [&](const auto& kernel) {
+        if (phases_) {
+          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, interactions_, set_phase_pressure);
+        } else {
+          passes::density_summation<D>(kernel, fluid_, fluid_fields_, interactions_, set_pressure);
+        }
+      },
+      kernel_);
+}
+
+template <int D>
+void Wcsph<D>::apply_equation_of_state() {
+  auto pressure = fluid_[fluid_fields_.pressure];
+  const auto density = std::as_const(fluid_)[fluid_fields_.density];
+  for_each_particle(fluid_.size(), [&](std::size_t i) { pressure[i] = pressure_at(eos_, density[i]); });
+}
+
+template <int D>
+void Wcsph<D>::extrapolate_wall_state(const Vector<D>& gravity) {
+  // Several fluids: the walls keep ρ0 (their volume enters the momentum pass, not their density).
+  const passes::WallPressureExtrapolation<D> wall_pressure{phases_ ? nullptr : &eos_, gravity,
+                                                           scene_.solver.clamp_negative_pressure};
+  std::visit(
+      [&](const auto& kernel) { passes::wall_states<D>(kernel, interactions_, fluid_, fluid_fields_, &wall_pressure); },
+      kernel_);
+}
+
+template <int D>
+void Wcsph<D>::compute_acceleration(const Vector<D>& gravity) {
   const passes::ViscositySettings viscosity =
       passes::viscosity_settings(scene_, eos_.sound_speed(), kinematic_viscosity_, smoothing_length_);
   const passes::ArtificialStressSettings stress{
       static_cast<Real>(scene_.solver.artificial_stress),
       std::visit([&](const auto& kernel) { return 1 / kernel.value(static_cast<Real>(scene_.particle_spacing)); },
                  kernel_)};
-  // Several fluids: the walls keep ρ0 (their volume enters the momentum pass, not their density).
-  const passes::WallPressureExtrapolation<D> wall_pressure{phases_ ? nullptr : &eos_, gravity,
-                                                           scene_.solver.clamp_negative_pressure};
-  auto pressure = fluid_[fluid_fields_.pressure];
-  const bool clamp = scene_.solver.clamp_negative_pressure;
-  const auto set_pressure = [&](std::size_t i, Real rho) {
-    const Real p = eos_.pressure(rho);
-    pressure[i] = clamp ? std::max(p, Real(0)) : p;
-  };
   std::vector<Real> dynamic_viscosity;
   passes::MultiphaseTerms multiphase;
   if (phases_) {
@@ -149,38 +232,15 @@ void Wcsph<D>::compute_interactions(const Vector<D>& gravity) {
     multiphase = {std::as_const(fluid_)[fluid_fields_.phase], dynamic_viscosity,
                   setup::wall_volume<D>(interactions_, eos_.rest_density())};
   }
-  const auto set_phase_pressure = [&, phase = multiphase.phase](std::size_t i, Real rho) {
-    const Real p = phases_->table[phase[i]].eos.pressure(rho);
-    pressure[i] = clamp ? std::max(p, Real(0)) : p;
-  };
-  // A density pass that also lists the neighbours counts as search: the two cannot be timed apart.
-  double& density_time = interactions_.listing_pending() ? pass_times_.neighbor_search : pass_times_.density;
-  auto clock = std::chrono::steady_clock::now();
   std::visit(
       [&](const auto& kernel) {
-        if (phases_) {
-          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, interactions_, set_phase_pressure);
-        } else if (scene_.solver.density == scene::DensityMethod::summation) {
-          passes::density_summation<D>(kernel, fluid_, fluid_fields_, interactions_, set_pressure);
-        } else {
-          const auto density = std::as_const(fluid_)[fluid_fields_.density];
-          for_each_particle(fluid_.size(), [&](std::size_t i) { set_pressure(i, density[i]); });
-        }
-        lap(clock, density_time);
-        passes::wall_states<D>(kernel, interactions_, fluid_, fluid_fields_, &wall_pressure);
-        lap(clock, pass_times_.wall_state);
         const std::span<Real> scratch =
             phases_ ? std::span<Real>{}
                     : interactions_.pass_scratch(fluid_.size() + interactions_.contact_particle_count());
         passes::fluid_acceleration<D>(kernel, viscosity, stress, fluid_, fluid_fields_, interactions_, gravity, scratch,
                                       phases_ ? &multiphase : nullptr);
-        lap(clock, pass_times_.momentum);
       },
       kernel_);
-  if (tension_) {
-    add_surface_tension();
-    lap(clock, pass_times_.surface_tension);
-  }
 }
 
 template <int D>
@@ -207,6 +267,14 @@ void Wcsph<D>::add_surface_tension() {
 }
 
 template <int D>
+void Wcsph<D>::integrate_density(const Vector<D>& gravity, Real dt) {
+  compute_density_rate(setup::hydrostatic_part<D>(scene_, gravity));
+  auto density = fluid_[fluid_fields_.density];
+  const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
+  for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] += dt * rate[i]; });
+}
+
+template <int D>
 void Wcsph<D>::compute_density_rate(const Vector<D>& gravity) {
   const passes::DensityDiffusion<D> diffusion{eos_, gravity, static_cast<Real>(scene_.solver.delta_sph),
                                               eos_.sound_speed()};
@@ -219,62 +287,44 @@ void Wcsph<D>::compute_density_rate(const Vector<D>& gravity) {
 
 template <int D>
 StepReport Wcsph<D>::step() {
-  StepReport report;
-  report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
-  last_time_step_ = report.time_step;
-  const Real dt = report.time_step.dt;
-  auto clock = std::chrono::steady_clock::now();
-  {
-    // Kick (half step) and drift of velocity Verlet.
-    auto x = fluid_[fluid_fields_.position];
-    auto v = fluid_[fluid_fields_.velocity];
-    const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
-    for_each_particle(fluid_.size(), [&](std::size_t i) {
-      const Vector<D> half_step_velocity = v[i] + (dt / 2) * a[i];
-      v.set(i, half_step_velocity);
-      x.set(i, x[i] + dt * half_step_velocity);
-    });
-  }
-  impose_inflow(dt);
-  if (injects_phase()) {
-    const Index phase = static_cast<Index>(*scene_.domain.inflow->phase);
-    passes::inject_phase<D>(static_cast<Real>(scene_.domain.box.max[0]), phase, phases_->table[phase].mass, fluid_,
-                            fluid_fields_);
-  }
-  lap(clock, pass_times_.integration);
-  report.removed = interactions_.update(fluid_, listing());
-  lap(clock, pass_times_.neighbor_search);
-  const Vector<D> gravity = setup::gravity_at<D>(scene_, time_ + dt);
-  if (scene_.solver.density == scene::DensityMethod::continuity) {
-    compute_density_rate(setup::hydrostatic_part<D>(scene_, gravity));
-    auto density = fluid_[fluid_fields_.density];
-    const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
-    for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] += dt * rate[i]; });
-    lap(clock, pass_times_.density);
-  }
-  compute_interactions(gravity);
-  clock = std::chrono::steady_clock::now();
-  {
-    auto v = fluid_[fluid_fields_.velocity];
-    const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
-    for_each_particle(fluid_.size(), [&](std::size_t i) { v.set(i, v[i] + (dt / 2) * a[i]); });
-  }
-  impose_inflow(0);
-  time_ += dt;
-  ++step_count_;
-  check_state();
-  lap(clock, pass_times_.integration);
-  if (scene_.solver.shifting != scene::Shifting::none) {
-    shift_particles(dt);
-    lap(clock, pass_times_.shifting);
-  }
-  return report;
+  StepContext context;
+  context.report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
+  last_time_step_ = context.report.time_step;
+  context.dt = context.report.time_step.dt;
+  pipeline_.run(context);
+  return context.report;
+}
+
+template <int D>
+void Wcsph<D>::kick_drift(Real dt) {
+  // Kick (half step) and drift of velocity Verlet.
+  auto x = fluid_[fluid_fields_.position];
+  auto v = fluid_[fluid_fields_.velocity];
+  const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
+  for_each_particle(fluid_.size(), [&](std::size_t i) {
+    const Vector<D> half_step_velocity = v[i] + (dt / 2) * a[i];
+    v.set(i, half_step_velocity);
+    x.set(i, x[i] + dt * half_step_velocity);
+  });
+}
+
+template <int D>
+void Wcsph<D>::kick(Real dt) {
+  auto v = fluid_[fluid_fields_.velocity];
+  const auto a = std::as_const(fluid_)[fluid_fields_.acceleration];
+  for_each_particle(fluid_.size(), [&](std::size_t i) { v.set(i, v[i] + (dt / 2) * a[i]); });
+}
+
+template <int D>
+void Wcsph<D>::inject_phase() {
+  const Index phase = static_cast<Index>(*scene_.domain.inflow->phase);
+  passes::inject_phase<D>(static_cast<Real>(scene_.domain.box.max[0]), phase, phases_->table[phase].mass, fluid_,
+                          fluid_fields_);
 }
 
 template <int D>
 void Wcsph<D>::impose_inflow(Real drift_time) {
   const auto& inflow = scene_.domain.inflow;
-  if (!inflow) return;
   passes::impose_inflow_velocity<D>(static_cast<Real>(scene_.domain.box.min[0]), static_cast<Real>(inflow->length),
                                     static_cast<Real>(inflow->velocity), drift_time, fluid_, fluid_fields_);
 }

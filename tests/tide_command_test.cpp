@@ -127,13 +127,32 @@ TEST_F(TideCommand, CheckAcceptsAGoodScene) {
 }
 
 // A run writes one frame per output interval plus the initial one, names them all in the
-// XDMF, and prints the summary with the binding time-step limits.
+// XDMF, and prints the summary with the binding time-step limits and the share of every stage
+// of the step (WCSPH with a skin: the density pass lists the pairs, in the search's stage),
+// adding to 100%.
 TEST_F(TideCommand, RunWritesFramesAndSummary) {
   const fs::path out = directory_ / "out";
   const CommandResult result = run_tide("run --out " + out.string() + " " + write_scene().string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("run summary"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("binding limit per step: acoustic"), std::string::npos) << result.output;
+  const std::string stages_label = "  stages      ";
+  const auto stages_at = result.output.find(stages_label);
+  ASSERT_NE(stages_at, std::string::npos) << result.output;
+  std::istringstream stages(result.output.substr(
+      stages_at + stages_label.size(), result.output.find('\n', stages_at) - stages_at - stages_label.size()));
+  std::vector<std::string> names;
+  int tenths = 0;
+  for (std::string name, share; stages >> name >> share;) {
+    names.push_back(name);
+    int whole = 0, tenth = 0;
+    ASSERT_EQ(std::sscanf(share.c_str(), "%d.%d%%", &whole, &tenth), 2) << share;
+    tenths += 10 * whole + tenth;
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"kick_drift", "neighbor_search+density_summation", "wall_state",
+                                             "momentum", "kick", "advance_time", "state_check"}))
+      << result.output;
+  EXPECT_EQ(tenths, 1000) << result.output;
   EXPECT_TRUE(fs::exists(out / "frames.xdmf"));
   for (int frame = 0; frame <= 5; ++frame) {
     char name[32];

@@ -12,6 +12,7 @@
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/phases.hpp"
+#include "tide/solvers/pipeline.hpp"
 #include "tide/solvers/simulation.hpp"
 #include "tide/solvers/time_step.hpp"
 
@@ -42,6 +43,9 @@ template <int D>
 class IncompressibleSph final : public Simulation<D> {
  public:
   explicit IncompressibleSph(const scene::Scene& scene);
+  // The pipeline's stages hold `this`.
+  IncompressibleSph(const IncompressibleSph&) = delete;
+  IncompressibleSph& operator=(const IncompressibleSph&) = delete;
 
   StepReport step() override;
 
@@ -61,8 +65,7 @@ class IncompressibleSph final : public Simulation<D> {
   Real max_speed() const override { return max_speed_; }
   std::size_t removed_total() const override { return interactions_.fluid_grid().removed_total(); }
   std::size_t neighbor_builds() const override { return interactions_.builds(); }
-  const PassTimes& pass_times() const override { return pass_times_; }
-  const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
+  const Pipeline& pipeline() const override { return pipeline_; }
   double bytes_per_particle() const override;
   /// The phases of a multiphase scene; null for a single fluid.
   const Phases* phases() const { return phases_ ? &*phases_ : nullptr; }
@@ -70,8 +73,23 @@ class IncompressibleSph final : public Simulation<D> {
  private:
   enum class Target { density, divergence };
 
-  void compute_density_and_factor();
+  /// The stages of a step, in order, for what the scene uses.
+  Pipeline build_pipeline();
+  Stage neighbor_search_stage();
+  /// Gradient cache, density and α_i after a neighbour search: what the start runs too.
+  std::vector<Stage> density_stages();
+  /// The non-pressure accelerations: what the start runs too.
+  std::vector<Stage> force_stages();
+  void cache_gradients();
+  void sum_density();
+  void compute_pressure_factor();
+  void extrapolate_wall_velocity();
   void compute_non_pressure_acceleration();
+  void predict_velocity(Real dt);
+  void drift(Real dt);
+  void shift_particles(Real dt);
+  /// DFSPH's divergence solve, from the velocities after the density solve.
+  SolveReport solve_divergence(Real dt);
   SolveReport solve(ScalarField pressure, Target target, Real warm_start, const Vector<D>& wall_gravity, Real dt);
   void count_failures(const StepReport& report);
   void check_state();
@@ -103,8 +121,7 @@ class IncompressibleSph final : public Simulation<D> {
   int failed_steps_in_a_row_ = 0;
   std::size_t worst_particle_ = 0;  // largest excess of the last solve, for the diagnosis
   Real worst_excess_ = 0;
-  PassTimes pass_times_;
-  std::vector<std::string_view> pipeline_;
+  Pipeline pipeline_;
 };
 
 extern template class IncompressibleSph<2>;

@@ -158,6 +158,13 @@ class Interactions {
     return count;
   }
 
+  /// Whether some contact is viscous (Contact::viscous: no-slip walls).
+  bool has_viscous_contact() const {
+    for (const auto& contact : contacts_)
+      if (contact->viscous()) return true;
+    return false;
+  }
+
   /// Whether the last update left the fluid–fluid and fluid → contact lists to walk_fluid_pairs.
   bool listing_pending() const { return listing_pending_; }
 

@@ -15,6 +15,7 @@
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/phases.hpp"
+#include "tide/solvers/pipeline.hpp"
 #include "tide/solvers/simulation.hpp"
 #include "tide/solvers/time_step.hpp"
 
@@ -37,6 +38,9 @@ class Wcsph final : public Simulation<D> {
  public:
   explicit Wcsph(const scene::Scene& scene);
   ~Wcsph() override;
+  // The pipeline's stages hold `this`.
+  Wcsph(const Wcsph&) = delete;
+  Wcsph& operator=(const Wcsph&) = delete;
 
   StepReport step() override;
 
@@ -55,8 +59,7 @@ class Wcsph final : public Simulation<D> {
   Real max_speed() const override { return max_speed_; }
   std::size_t removed_total() const override { return interactions_.fluid_grid().removed_total(); }
   std::size_t neighbor_builds() const override { return interactions_.builds(); }
-  const PassTimes& pass_times() const override { return pass_times_; }
-  const std::vector<std::string_view>& pipeline() const override { return pipeline_; }
+  const Pipeline& pipeline() const override { return pipeline_; }
   /// The phases of a multiphase scene; null for a single fluid.
   const Phases* phases() const { return phases_ ? &*phases_ : nullptr; }
   /// The pairwise model's force strength s_ab between phases a and b (Tartakovsky & Meakin 2005);
@@ -71,13 +74,34 @@ class Wcsph final : public Simulation<D> {
   void set_hydrostatic_density();
   /// How interactions_ lists the pairs after an update: by the density pass where it can.
   typename Interactions<D>::Listing listing() const;
-  void compute_interactions(const Vector<D>& gravity);
+  /// The stages of a step, in order, for what the scene uses.
+  Pipeline build_pipeline();
+  /// The neighbour search, with the density pass where that pass lists the pairs.
+  Stage neighbor_search_stage();
+  /// From the density to the accelerations: what the start runs after its neighbour search too.
+  std::vector<Stage> force_stages();
+  /// Whether the density pass lists the neighbours (summation density with a skin), so that it
+  /// runs in the neighbour search's stage.
+  bool density_lists_neighbors() const;
+  std::string_view density_pass_name() const;
+  /// The gravity the forces of the step of `context` use.
+  Vector<D> step_gravity(const StepContext& context) const;
+  void kick_drift(Real dt);
+  void kick(Real dt);
+  void inject_phase();
+  /// The pressure of `eos` at density rho, clamped at 0 where solver.clamp_negative_pressure says.
+  Real pressure_at(const EquationOfState& eos, Real rho) const;
+  void sum_density();
+  void apply_equation_of_state();
+  void extrapolate_wall_state(const Vector<D>& gravity);
+  void compute_acceleration(const Vector<D>& gravity);
   void add_surface_tension();
-  void build_pipeline();
+  /// Continuity density: ρ += Δt Dρ/Dt.
+  void integrate_density(const Vector<D>& gravity, Real dt);
   void compute_density_rate(const Vector<D>& gravity);
   void shift_particles(Real dt);
-  /// The inflow buffer (domain.inflow): its particles at the inflow velocity, moved as if they
-  /// had drifted at it over `drift_time`; nothing without an inflow.
+  /// The inflow buffer (domain.inflow, which the scene must have): its particles at the inflow
+  /// velocity, moved as if they had drifted at it over `drift_time`.
   void impose_inflow(Real drift_time);
   /// Whether the inflow injects a phase (domain.inflow.phase in a multiphase scene).
   bool injects_phase() const;
@@ -93,7 +117,6 @@ class Wcsph final : public Simulation<D> {
   Real kinematic_viscosity_;
   std::optional<Phases> phases_;
   std::unique_ptr<const passes::SurfaceTensionSettings> tension_;
-  std::vector<std::string_view> pipeline_;
   TimeStepRule time_step_rule_;
   ParticleSet<D> fluid_;
   FluidFields<D> fluid_fields_;
@@ -103,7 +126,7 @@ class Wcsph final : public Simulation<D> {
   TimeStep last_time_step_;
   Real max_speed_ = 0;
   Real max_acceleration_ = 0;
-  PassTimes pass_times_;
+  Pipeline pipeline_;
 };
 
 extern template class Wcsph<2>;
