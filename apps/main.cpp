@@ -10,6 +10,7 @@
 
 #include "oil_study_command.hpp"
 #include "run_command.hpp"
+#include "scene_keys_command.hpp"
 #include "stress_command.hpp"
 #include "tide/core/config.hpp"
 #include "tide/core/large_block_release.hpp"
@@ -113,6 +114,13 @@ int main(int argc, char** argv) {
   oil->add_flag("--reuse", oil_options.reuse, "keep the runs in --out that reached their end time");
   oil->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
 
+  std::filesystem::path keys_docs = "docs/scenes.md", keys_dictionary = "fuzz/scene.dict";
+  CLI::App* scene_keys = app.add_subcommand(
+      "scene-keys", "rewrite the key tables of docs/scenes.md and fuzz/scene.dict from the scene reader's tables");
+  scene_keys->group("");  // for maintainers: not listed in --help
+  scene_keys->add_option("--docs", keys_docs, "the scenes page (default: docs/scenes.md)");
+  scene_keys->add_option("--dict", keys_dictionary, "the fuzz dictionary (default: fuzz/scene.dict)");
+
   CLI::App* info_command = app.add_subcommand("info", "version, precision, threads and build flags");
   info_command->add_option("--threads", threads, "number of worker threads")->check(CLI::PositiveNumber);
 
@@ -137,6 +145,7 @@ int main(int argc, char** argv) {
     }
     if (*stress) return tide::app::stress(stress_options);
     if (*oil) return tide::app::oil_study(oil_options);
+    if (*scene_keys) return tide::app::write_scene_keys(keys_docs, keys_dictionary);
     return info();
   } catch (const std::exception& error) {
     std::cerr << "tide: error: " << error.what() << '\n';

@@ -18,6 +18,7 @@
 #include "tide/io/probe_writer.hpp"
 #include "tide/io/recovery_writer.hpp"
 #include "tide/io/scene_reader.hpp"
+#include "tide/solvers/capabilities.hpp"
 #include "tide/solvers/instability.hpp"
 #include "tide/solvers/probes.hpp"
 #include "tide/solvers/recovery.hpp"
@@ -244,9 +245,10 @@ void warn_about(const scene::Scene& scene) {
 std::optional<scene::Scene> load(const std::filesystem::path& file) {
   try {
     scene::Scene scene = io::read_scene_file(file);
+    check_capabilities(scene);
     warn_about(scene);
     return scene;
-  } catch (const io::SceneError& error) {
+  } catch (const scene::SceneError& error) {
     std::cerr << "tide: " << error.what() << '\n';
     return std::nullopt;
   }

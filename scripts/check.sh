@@ -80,8 +80,11 @@ section "libFuzzer: the scene parser for ${fuzz_seconds} s"
 findings=build-fuzz/check-findings
 rm -rf "$findings" && mkdir -p "$findings" "$scratch/corpus"
 cp scenes/*.json fuzz/corpus/* "$scratch/corpus/"
-if ! build-fuzz/fuzz/scene_parser_fuzzer -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 \
-  -max_len=4096 -dict=fuzz/scene.dict -artifact_prefix="$findings/" -print_final_stats=1 \
+# Each input must be answered within 5 s and 1 GiB (docs/stability.md, "Bad input"): -timeout
+# is the per-input time, -rss_limit_mb the whole process's memory and -malloc_limit_mb the largest
+# single allocation; exceeding any is a finding.
+if ! build-fuzz/fuzz/scene_parser_fuzzer -max_total_time="$fuzz_seconds" -timeout=5 -rss_limit_mb=1024 \
+  -malloc_limit_mb=1024 -max_len=4096 -dict=fuzz/scene.dict -artifact_prefix="$findings/" -print_final_stats=1 \
   "$scratch/corpus" >"$scratch/fuzz.log" 2>&1; then
   tail -n 80 "$scratch/fuzz.log"
   for input in "$findings"/*; do

@@ -23,6 +23,7 @@
 #include "state_check.hpp"
 #include "tide/core/log.hpp"
 #include "tide/core/parallel.hpp"
+#include "tide/solvers/capabilities.hpp"
 #include "tide/solvers/instability.hpp"
 
 namespace tide {
@@ -90,13 +91,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
                     setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
   if (!(reference_sound_speed_ > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
-  if (scene.domain.inflow) throw std::invalid_argument(scene.source + ": a domain inflow needs the wcsph scheme");
-  if (scene.solver.surface_tension.model != scene::SurfaceTensionModel::none)
-    throw std::invalid_argument(scene.source + ": surface tension needs the wcsph scheme");
-  if (scene::fluid_density_ratio(scene) > scene::max_incompressible_density_ratio)
-    throw std::invalid_argument(scene.source + ": fluids whose rest densities differ by more than " +
-                                setup::format_number(scene::max_incompressible_density_ratio) +
-                                " times need the wcsph scheme");
+  check_capabilities(scene);
   relaxation_ =
       effective_relaxation(scheme_, jacobi_spectral_bound<D>(kernel_, static_cast<Real>(scene.particle_spacing)));
   if (scene::fluid_material_count(scene) > 1) phases_ = setup::make_phases<D>(scene, kernel_);

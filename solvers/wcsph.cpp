@@ -21,6 +21,7 @@
 #include "state_check.hpp"
 #include "surface_tension_setup.hpp"
 #include "tide/core/parallel.hpp"
+#include "tide/solvers/capabilities.hpp"
 #include "tide/solvers/particle_sampling.hpp"
 
 namespace tide {
@@ -40,12 +41,8 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
                     setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
   if (!(eos_.sound_speed() > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
-  if (scene::fluid_material_count(scene) > 1) {
-    if (scene.solver.density != scene::DensityMethod::summation || scene.solver.artificial_stress > 0)
-      throw std::invalid_argument(scene.source +
-                                  ": several fluid materials need summation density and no artificial stress");
-    phases_ = setup::make_phases<D>(scene, kernel_);
-  }
+  check_capabilities(scene);
+  if (scene::fluid_material_count(scene) > 1) phases_ = setup::make_phases<D>(scene, kernel_);
   const Real particle_mass = setup::particle_mass<D>(scene, kernel_, eos_.rest_density());
   fluid_ = setup::make_fluid<D>(scene, particle_mass, eos_.rest_density(), fluid_fields_, phases());
   setup::SchemeSurfaceTension tension = setup::make_surface_tension<D>(scene, kernel_, phases(), eos_.rest_density(),

@@ -2,11 +2,17 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
+
+#include "tide/solvers/capabilities.hpp"
 
 namespace tide::io {
 namespace {
@@ -78,16 +84,32 @@ SceneError error_of(const std::string& text) {
   return SceneError("", "", "", "");
 }
 
-/// The scene must be refused at `key_path` with a message naming the file, the key path and
-/// containing `expectation`.
-void expect_refused(const json& document, const std::string& key_path, const std::string& expectation) {
-  const SceneError error = error_of(document.dump());
+/// `error` is at `key_path`, with a message naming the file, the key path and containing
+/// `expectation`.
+void expect_error_at(const SceneError& error, const std::string& key_path, const std::string& expectation) {
   const std::string message = error.what();
   EXPECT_EQ(error.file(), file_name) << message;
   EXPECT_EQ(error.key_path(), key_path) << message;
   EXPECT_NE(message.find(std::string(file_name) + ": " + key_path + ": expected "), std::string::npos) << message;
   EXPECT_NE(message.find(expectation), std::string::npos) << message;
   EXPECT_NE(error.expected().find(expectation), std::string::npos) << message;
+}
+
+/// The reader must refuse the scene at `key_path`.
+void expect_refused(const json& document, const std::string& key_path, const std::string& expectation) {
+  expect_error_at(error_of(document.dump()), key_path, expectation);
+}
+
+/// The reader accepts the scene, and the solvers' capability check refuses it at `key_path`, with
+/// the same message form as the reader's.
+void expect_unsupported(const json& document, const std::string& key_path, const std::string& expectation) {
+  const scene::Scene scene = parse(document);
+  try {
+    check_capabilities(scene);
+    ADD_FAILURE() << "no SceneError from check_capabilities for " << document.dump();
+  } catch (const SceneError& error) {
+    expect_error_at(error, key_path, expectation);
+  }
 }
 
 scene::Vec vec(double x, double y, double z = 0) { return {x, y, z}; }
@@ -284,6 +306,14 @@ TEST(SceneReader, ReadsWallAndFluidVelocities) {
   EXPECT_EQ(s.solver.shifting, scene::Shifting::fickian);
 }
 
+// An obstacle's own slip is read where given and left unset (the walls' slip) where not.
+TEST(SceneReader, ReadsAnObstaclesOwnSlip) {
+  const scene::Scene s = parse(with(full_2d_scene(), "/walls/obstacles/1/slip", "free_slip"));
+  EXPECT_FALSE(s.walls.obstacles[0].slip.has_value());
+  EXPECT_EQ(s.walls.obstacles[1].slip, scene::WallSlip::free_slip);
+  expect_refused(with(full_2d_scene(), "/walls/obstacles/0/slip", "sticky"), "/walls/obstacles/0/slip", "no_slip");
+}
+
 TEST(SceneReader, ReadsTheIncompressibleSchemesAndTheirSolverKeys) {
   for (const auto& [name, scheme] :
        {std::pair{"dfsph", scene::Scheme::dfsph}, std::pair{"iisph", scene::Scheme::iisph}}) {
@@ -400,21 +430,21 @@ TEST(SceneReaderRefuses, BadSurfaceTensionAndMultiphaseSettings) {
                  tension + "/unlike_attraction", "true or false");
   expect_refused(with(with(two_fluid_scene(), tension + "/model", "pairwise"), tension + "/contact_angle", 180),
                  tension + "/contact_angle", "an angle in degrees in (0, 180)");
-  expect_refused(with(full_2d_scene(), tension, {{"model", "csf"}, {"coefficient", 1}}), tension + "/model",
-                 "\"csf\" needs exactly two fluid materials");
-  expect_refused(with(two_fluid_scene(), "/solver/density", "continuity"), "/solver/density",
-                 "\"summation\" for a scene with several fluid materials");
-  expect_refused(with(two_fluid_scene(), "/solver/scheme", "dfsph"), "/solver/scheme",
-                 "\"wcsph\" with surface tension");
+  expect_unsupported(with(full_2d_scene(), tension, {{"model", "csf"}, {"coefficient", 1}}), tension + "/model",
+                     "\"csf\" needs exactly two fluid materials");
+  expect_unsupported(with(two_fluid_scene(), "/solver/density", "continuity"), "/solver/density",
+                     "\"summation\" for a scene with several fluid materials");
+  expect_unsupported(with(two_fluid_scene(), "/solver/scheme", "dfsph"), "/solver/scheme",
+                     "\"wcsph\" with surface tension");
   const json incompressible_pair =
       with(without(two_fluid_scene(), "/solver/surface_tension"), "/solver/scheme", "iisph");
   EXPECT_EQ(parse(incompressible_pair).solver.scheme, scene::Scheme::iisph);
-  expect_refused(with(incompressible_pair, "/materials/1/rest_density", 80), "/solver/scheme",
-                 "\"wcsph\" for fluids whose rest densities differ by more than 10 times");
-  expect_refused(with(two_fluid_scene(), "/solver/artificial_stress", 0.2), "/solver/artificial_stress",
-                 "0 for a scene with several fluid materials");
-  expect_refused(with(full_2d_scene(), "/output/fields", {"position", "phase"}), "/output/fields/1",
-                 "\"phase\" needs several fluid materials");
+  expect_unsupported(with(incompressible_pair, "/materials/1/rest_density", 80), "/solver/scheme",
+                     "\"wcsph\" for fluids whose rest densities differ by more than 10 times");
+  expect_unsupported(with(two_fluid_scene(), "/solver/artificial_stress", 0.2), "/solver/artificial_stress",
+                     "0 for a scene with several fluid materials");
+  expect_unsupported(with(full_2d_scene(), "/output/fields", {"position", "phase"}), "/output/fields/1",
+                     "\"phase\" needs several fluid materials");
 }
 
 TEST(SceneReader, AcceptsComments) {
@@ -679,8 +709,8 @@ TEST(SceneReaderRefuses, AnInflowWithoutAPeriodicXAxisOrWcsph) {
   expect_refused(with(periodic, "/domain/inflow", json{{"velocity", 0.5}}), "/domain/inflow/length", length);
   expect_refused(with(periodic, "/domain/inflow", json{{"velocity", "fast"}, {"length", 0.2}}),
                  "/domain/inflow/velocity", "a number");
-  expect_refused(with(with(periodic, "/domain/inflow", inflow), "/solver", json{{"scheme", "dfsph"}}), "/solver/scheme",
-                 "\"wcsph\" with a domain inflow");
+  expect_unsupported(with(with(periodic, "/domain/inflow", inflow), "/solver", json{{"scheme", "dfsph"}}),
+                     "/solver/scheme", "\"wcsph\" with a domain inflow");
 }
 
 TEST(SceneReader, AnInflowThatInjectsAPhase) {
@@ -697,7 +727,7 @@ TEST(SceneReader, AnInflowThatInjectsAPhase) {
                  R"(the name of a material: "water", "oil")");
   expect_refused(with(injecting, "/domain/inflow/phase", 1), "/domain/inflow/phase", "the name of a material");
   // Several fluid materials need WCSPH with summation density.
-  expect_refused(with(injecting, "/solver", json{{"density", "continuity"}}), "/solver/density", "\"summation\"");
+  expect_unsupported(with(injecting, "/solver", json{{"density", "continuity"}}), "/solver/density", "\"summation\"");
 }
 
 TEST(SceneReader, TheRecoveryOfAMaterialFromARegion) {
@@ -752,6 +782,106 @@ TEST(SceneReaderRefuses, BadProbes) {
                  R"(one of the keys "name", "type", "position")");
   expect_refused(with(full_2d_scene(), "/probes", json::object()), "/probes", "an array of probes");
   expect_refused(with(full_2d_scene(), "/output/probe_interval", 0), "/output/probe_interval", "a number > 0");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scenes too large for the machine, and absurd values: refused before anything is allocated, at
+// once. The bound of 1 s is generous: reading a scene is proportional to its text, never to the
+// particles it implies (a scene of 10^20 particles is refused as fast as one of 10).
+
+constexpr double seconds_to_refuse = 1.0;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Refused at `key_path`, the message giving the implied count, within seconds_to_refuse.
+void expect_too_many_particles(const json& document, const std::string& key_path, const std::string& count) {
+  const auto start = std::chrono::steady_clock::now();
+  expect_refused(document, key_path, "a scene of at most ");
+  EXPECT_LT(seconds_since(start), seconds_to_refuse);
+  EXPECT_EQ(error_of(document.dump()).found(), count + " particles (lattice points to visit)");
+}
+
+TEST(SceneReaderRefuses, ATinySpacingInABigBox) {
+  // [0, 0.5]² at 1e-7: (5e6 + 2)² lattice points visited, about 2.5e13.
+  expect_too_many_particles(with(minimal_scene(), "/particle_spacing", 1e-7), "/fluid/0/box", "2.5e+13");
+}
+
+TEST(SceneReaderRefuses, WallsReachingAbsurdlyFar) {
+  json obstacle = with(minimal_scene(), "/walls/obstacles",
+                       json::array({{{"box", {{"min", {-1e300, 0}}, {"max", {1e300, 0.1}}}}}}));
+  expect_refused(obstacle, "/walls/obstacles/0/box", "a shape within 2.14748e+09 particle spacings");
+  // A container (open top) whose layers alone imply about (2·10^9) x (10^9) lattice points.
+  const json thick = with(without(minimal_scene(), "/domain"), "/walls",
+                          {{"layers", 1'000'000'000}, {"container", {{"min", {0, 0}}, {"max", {1, 1}}}}});
+  expect_too_many_particles(thick, "/walls/container", "2e+18");
+  // A plane's wall is sampled over the whole domain: (10^9 + 2) x 102 lattice points at 0.01.
+  json plane = with(minimal_scene(), "/domain/max", {1e7, 1});
+  plane["walls"] = {{"obstacles", {{{"plane", {{"point", {0, 0.1}}, {"normal", {0, 1}}}}}}}};
+  expect_too_many_particles(plane, "/walls/obstacles/0/plane", "1.02e+11");
+}
+
+TEST(SceneReaderRefuses, ShapesEachWithinTheCapButTogetherBeyondIt) {
+  // Two boxes [0, n] x [0, 1] at spacing 1 visit 3 (n + 2) lattice points each (anchor 0: from
+  // k = -1 to n on x, -1 to 1 on y): each 60% of the cap, together 120%.
+  const double n = std::floor(0.6 * static_cast<double>(largest_particle_count()) / 3) - 2;
+  json two = with(with(minimal_scene(), "/particle_spacing", 1), "/domain", {{"min", {0, 0}}, {"max", {n + 1, 2}}});
+  two["fluid"] = {{{"material", "water"}, {"box", {{"min", {0, 0}}, {"max", {n, 1}}}}},
+                  {{"material", "water"}, {"box", {{"min", {0, 0}}, {"max", {n, 1}}}}}};
+  const auto start = std::chrono::steady_clock::now();
+  const SceneError error = error_of(two.dump());
+  EXPECT_LT(seconds_since(start), seconds_to_refuse);
+  EXPECT_EQ(error.key_path(), "/particle_spacing") << error.what();
+  EXPECT_NE(error.found().find(" particles"), std::string::npos) << error.what();
+}
+
+TEST(SceneReader, ExtremeValuesGiveASceneOrAnErrorAtOnce) {
+  const std::vector<std::pair<std::string, json>> changes{
+      {"/particle_spacing", 1e308},
+      {"/particle_spacing", 5e-324},
+      {"/domain/max", {1e308, 1e308}},
+      {"/domain/min", {-1e308, -1e308}},
+      {"/fluid/0/box/min", {-1e308, 0}},
+      {"/fluid/0/box/max", {1e308, 0.5}},
+      {"/dimension", 18446744073709551615u},
+      {"/dimension", -9223372036854775807},
+      {"/solver/max_solver_iterations", 9223372036854775807},
+      {"/solver/max_failed_solves", 18446744073709551615u},
+      {"/walls/layers", 2147483647},
+      {"/kernel/smoothing_ratio", 1e308},
+      {"/time/end", 1e308},
+      {"/gravity", {1e308, -1e308}},
+      {"/materials/0/rest_density", 1e-308},
+  };
+  for (const auto& [pointer, value] : changes) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      const scene::Scene s = parse(with(minimal_scene(), pointer, value));
+      EXPECT_EQ(s.dimension, 2) << pointer;
+    } catch (const SceneError& error) {
+      EXPECT_EQ(error.file(), file_name) << error.what();
+    }
+    EXPECT_LT(seconds_since(start), seconds_to_refuse) << pointer << " = " << value.dump();
+  }
+  // Not JSON at all: NaN, infinity, a number beyond a double.
+  for (const std::string number : {"NaN", "nan", "Infinity", "-inf", "1e400", "-1e999"}) {
+    json document = minimal_scene();
+    std::string text = document.dump();
+    text.replace(text.find("0.01"), 4, number);
+    const SceneError error = error_of(text);
+    EXPECT_EQ(error.expected(), "valid JSON") << number << ": " << error.what();
+  }
+}
+
+TEST(SceneReaderRefuses, EveryTruncationOfAScene) {
+  const std::string text = full_2d_scene().dump(2);
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t length = 0; length < text.size(); ++length) {
+    const SceneError error = error_of(text.substr(0, length));
+    EXPECT_EQ(error.expected(), "valid JSON") << length << ": " << error.what();
+  }
+  EXPECT_LT(seconds_since(start), seconds_to_refuse * 10) << text.size() << " truncations";
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -112,6 +113,53 @@ TEST_F(TideCommand, RecoveryFromARegionWithoutTheMaterialIsRefused) {
   EXPECT_NE(result.output.find("/output/recovery/region holds no particle of material \"water\""), std::string::npos)
       << result.output;
   EXPECT_FALSE(fs::exists(directory_ / "out" / "recovery.csv"));
+}
+
+// A capability rule (tide::check_capabilities), not a reader rule: the same message form, exit 2.
+TEST_F(TideCommand, AnUnsupportedCombinationIsRefused) {
+  expect_refused(R"("time":)",
+                 R"("solver": {"scheme": "dfsph", "surface_tension": {"model": "akinci", "coefficient": 1}},
+  "time":)",
+                 "/solver/scheme", "expected \"wcsph\" with surface tension");
+}
+
+// `tide check` on absurd scenes: each answered with exit code 0 or 2 within 5 s (the process's
+// start included; the reader itself takes milliseconds), without allocating what the scene
+// implies. The scenes too large for the machine name the key and the implied particle count.
+TEST_F(TideCommand, CheckAnswersAbsurdScenesWithinFiveSeconds) {
+  struct Absurd {
+    std::string from, to, key_path;
+    bool too_large = false;  // refused for the particles it implies
+  };
+  const std::vector<Absurd> scenes{
+      {R"("particle_spacing": 0.01)", R"("particle_spacing": 1e-9)", "/fluid/0/box", true},
+      {R"("open_top": true}})",
+       R"("open_top": true}, "obstacles": [{"box": {"min": [-1e300, 0], "max": [1e300, 0.1]}}]})",
+       "/walls/obstacles/0/box", true},
+      {R"("layers": 3)", R"("layers": 2000000000)", "/walls/container", true},
+      {R"("particle_spacing": 0.01)", R"("particle_spacing": 1e308)", "/fluid/0/box"},
+      {R"("particle_spacing": 0.01)", R"("particle_spacing": NaN)", "line 3"},
+      {R"("particle_spacing": 0.01)", R"("particle_spacing": -Infinity)", "line 3"},
+      {R"("end": 0.05)", R"("end": 1e308)", ""},
+      {R"("layers": 3)", R"("layers": 99999999999999999999999)", "/walls/layers"},
+      {R"("layers": 3)", R"("layers": 18446744073709551615)", "/walls/layers"},
+      {R"("time": {"start": 0, "end": 0.05, "output_interval": 0.01}
+})",
+       R"("time": {"start": 0, "end": 0.0)", "line"},
+  };
+  for (const Absurd& absurd : scenes) {
+    const fs::path scene = write_scene(absurd.from, absurd.to);
+    const auto start = std::chrono::steady_clock::now();
+    const CommandResult result = run_tide("check " + scene.string());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 5.0) << absurd.to;
+    EXPECT_TRUE(result.exit_code == 0 || result.exit_code == 2) << absurd.to << ": " << result.output;
+    EXPECT_NE(result.output.find(absurd.key_path), std::string::npos) << absurd.to << ": " << result.output;
+    if (absurd.too_large) {
+      EXPECT_EQ(result.exit_code, 2) << result.output;
+      EXPECT_NE(result.output.find(" particle"), std::string::npos) << result.output;
+    }
+  }
 }
 
 TEST_F(TideCommand, MissingFileIsRefused) {

@@ -3,50 +3,27 @@
 // Scene files (JSON, documented key by key in docs/scenes.md) → the scene model. A scene is
 // checked completely before any work starts: every key is known, typed and in range, and the
 // geometry leaves the solver something sensible to do. The first problem found is thrown as a
-// SceneError that says where it is and what was expected there.
+// SceneError that says where it is and what was expected there. Which combinations of settings
+// the schemes support is the solvers' to say (tide::check_capabilities).
 
-#include <cstddef>
+#include <cstdint>
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "tide/core/scene.hpp"
+#include "tide/core/scene_error.hpp"
 
 namespace tide::io {
 
-/// A scene that cannot be simulated. what() reads
-///   dam.json: /solver/cfl: expected a number > 0, got "fast"
-/// or, for text that is not JSON,
-///   dam.json: line 4, column 12: expected valid JSON, got syntax error while parsing ...
-class SceneError : public std::runtime_error {
- public:
-  /// A problem at `key_path` (a JSON pointer such as "/fluid/1/box/max/0"; empty for the whole
-  /// document). `found` describes what is there, e.g. the offending value as JSON.
-  SceneError(std::string file, std::string key_path, std::string expected, std::string found);
+/// what() reads "dam.json: /solver/cfl: expected a number > 0, got "fast"" (see scene::SceneError).
+using SceneError = scene::SceneError;
 
-  /// Text that does not parse as JSON; line and column count from 1.
-  static SceneError syntax(std::string file, std::size_t line, std::size_t column, std::string found);
-
-  const std::string& file() const { return file_; }
-  const std::string& key_path() const { return key_path_; }
-  const std::string& expected() const { return expected_; }
-  const std::string& found() const { return found_; }
-  /// Where a syntax error is; 0 for errors that have a key path instead.
-  std::size_t line() const { return line_; }
-  std::size_t column() const { return column_; }
-
- private:
-  SceneError(std::string message, std::string file, std::string key_path, std::string expected, std::string found,
-             std::size_t line, std::size_t column);
-
-  std::string file_;
-  std::string key_path_;
-  std::string expected_;
-  std::string found_;
-  std::size_t line_ = 0;
-  std::size_t column_ = 0;
-};
+/// The most particles a scene may imply, counted as the lattice points the particle sampling
+/// visits (fluid blocks, container walls, obstacles' bounding boxes): the smaller of 2^31 − 1 and
+/// this machine's physical memory over 352 B, the least a particle holds in a run
+/// (docs/scenes.md, "Checks"). A scene beyond it is refused before anything is allocated.
+std::int64_t largest_particle_count();
 
 /// Reads and checks the scene in `file`; messages name the file as given.
 scene::Scene read_scene_file(const std::filesystem::path& file);

@@ -1,0 +1,113 @@
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "scene_keys.hpp"
+#include "scene_sections.hpp"
+#include "scene_shapes.hpp"
+#include "scene_text.hpp"
+
+namespace tide::io {
+namespace {
+
+/// Fewer layers than the kernel support leave a fluid particle at a wall with a truncated
+/// kernel: the wall lets fluid through or pushes it too weakly.
+void read_layers(const ValueReader& values, const Node& value, scene::Walls& walls) {
+  const scene::Scene& scene = values.scene();
+  const int least = scene::required_wall_layers(scene.kernel, scene.smoothing_ratio);
+  const double support_in_spacings = static_cast<double>(kernel_support_factor(scene.kernel)) * scene.smoothing_ratio;
+  const std::string expected = "an integer >= " + std::to_string(least) + " (ceil(kernel support / spacing), " +
+                               "the support being " + format_number(support_in_spacings) + " spacings)";
+  walls.layers = static_cast<int>(values.integer(value, least, std::numeric_limits<int>::max(), expected));
+}
+
+scene::Obstacle read_obstacle(const ValueReader& values, const Node& node) {
+  scene::Obstacle obstacle;
+  read_section(values, node, obstacle_keys(), obstacle);
+  const std::string_view shape = shape_key(values, node, {"box", "ball", "plane"});
+  if (shape == "box") {
+    obstacle.shape = read_box(values, child(node, shape));
+  } else if (shape == "ball") {
+    obstacle.shape = read_ball(values, child(node, shape));
+  } else {
+    obstacle.shape = read_plane(values, child(node, shape));
+  }
+  return obstacle;
+}
+
+}  // namespace
+
+std::span<const Key<scene::Walls>> wall_keys() {
+  static constexpr std::array<Key<scene::Walls>, 4> keys{{
+      {"layers", "integer ≥ ceil(support radius / Δx)", "–", "ceil(support radius / Δx), 3 with the default kernel",
+       "Layers of wall particles behind each wall surface.", Presence::optional, read_layers},
+      {"slip", "string: `\"no_slip\"` or `\"free_slip\"`", "–", "`\"no_slip\"`",
+       "Tangential velocity condition at walls.", Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Walls& walls) {
+         walls.slip = values.choice(value, wall_slip_names);
+       }},
+      {"container", "object", "–", "none", "A box whose inner faces are walls.", Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Walls& walls) {
+         walls.container.emplace();
+         read_section(values, value, container_keys(), *walls.container);
+       }},
+      {"obstacles", "array of objects", "–", "`[]`",
+       "Solid shapes inside the domain, each `{\"box\": ...}`, `{\"ball\": ...}` or `{\"plane\": ...}` (exactly "
+       "one shape key), with an optional `\"velocity\"` and `\"slip\"`.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Walls& walls) {
+         for (const Node& entry : values.elements(value, 0, "an array of obstacles"))
+           walls.obstacles.push_back(read_obstacle(values, entry));
+       }},
+  }};
+  return keys;
+}
+
+std::span<const Key<scene::Container>> container_keys() {
+  static constexpr std::array<Key<scene::Container>, 3> keys{{
+      {"min", "vector", "m", "", "Low corner of the inner (fluid-side) box.", Presence::required,
+       [](const ValueReader& values, const Node& value, scene::Container& container) {
+         read_min_corner(values, value, container.inner);
+       }},
+      {"max", "vector", "m", "", "High corner of the inner box; `max` > `min` on every axis.", Presence::required,
+       [](const ValueReader& values, const Node& value, scene::Container& container) {
+         read_max_corner(values, value, container.inner);
+       }},
+      {"open_top", "boolean", "–", "`true`", "Leave out the wall at the top (high end of the last axis).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Container& container) {
+         container.open_top = values.boolean(value);
+       }},
+  }};
+  return keys;
+}
+
+std::span<const Key<scene::Obstacle>> obstacle_keys() {
+  static constexpr std::array<Key<scene::Obstacle>, 5> keys{{
+      // Exactly one shape key (read_obstacle).
+      {"box", "[box](#box)", "–", "–", "A solid box."},
+      {"ball", "[ball](#ball)", "–", "–", "A solid ball (a disc in 2D)."},
+      {"plane", "[plane](#plane)", "–", "–", "A solid half-space."},
+      {"velocity", "vector", "m/s", "zero",
+       "The velocity of the obstacle's surface in the no-slip condition; its particles stay in place.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Obstacle& obstacle) {
+         obstacle.velocity = values.vector(value);
+       }},
+      {"slip", "string: `\"no_slip\"` or `\"free_slip\"`", "–", "`walls.slip`",
+       "The obstacle's tangential velocity condition. One that differs from `walls.slip` makes the obstacles "
+       "of that slip a second wall contact (a no-slip obstacle in a free-slip tank, say).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Obstacle& obstacle) {
+         obstacle.slip = values.choice(value, wall_slip_names);
+       }},
+  }};
+  return keys;
+}
+
+void read_walls(const ValueReader& values, const Node& node, scene::Scene& scene) {
+  read_section(values, node, wall_keys(), scene.walls);
+}
+
+}  // namespace tide::io

@@ -1,0 +1,39 @@
+#pragma once
+
+// The spellings of the scene model's enumerators in scene files: what the reader accepts, and
+// the names of the fuzz dictionary.
+
+#include <array>
+#include <string_view>
+
+#include "tide/core/scene.hpp"
+
+namespace tide::io {
+
+/// An enumerator with its spelling in scene files.
+template <class E>
+struct Named {
+  std::string_view name;
+  E value;
+};
+
+inline constexpr std::array<Named<scene::Scheme>, 3> scheme_names{
+    {{"wcsph", scene::Scheme::wcsph}, {"dfsph", scene::Scheme::dfsph}, {"iisph", scene::Scheme::iisph}}};
+inline constexpr std::array<Named<scene::EquationOfState>, 2> equation_of_state_names{
+    {{"tait", scene::EquationOfState::tait}, {"linear", scene::EquationOfState::linear}}};
+inline constexpr std::array<Named<scene::DensityMethod>, 2> density_method_names{
+    {{"summation", scene::DensityMethod::summation}, {"continuity", scene::DensityMethod::continuity}}};
+inline constexpr std::array<Named<scene::ViscosityModel>, 2> viscosity_model_names{
+    {{"artificial", scene::ViscosityModel::artificial}, {"laminar", scene::ViscosityModel::laminar}}};
+inline constexpr std::array<Named<scene::Shifting>, 2> shifting_names{
+    {{"none", scene::Shifting::none}, {"fickian", scene::Shifting::fickian}}};
+inline constexpr std::array<Named<scene::SurfaceTensionModel>, 3> surface_tension_model_names{
+    {{"csf", scene::SurfaceTensionModel::csf},
+     {"akinci", scene::SurfaceTensionModel::akinci},
+     {"pairwise", scene::SurfaceTensionModel::pairwise}}};
+inline constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
+    {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
+inline constexpr std::array<Named<scene::ProbeType>, 2> probe_type_names{
+    {{"pressure", scene::ProbeType::pressure}, {"water_height", scene::ProbeType::water_height}}};
+
+}  // namespace tide::io

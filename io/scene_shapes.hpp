@@ -1,0 +1,29 @@
+#pragma once
+
+// Reading the shapes of a scene (boxes, balls, planes) and the corners of the boxes that are
+// sections of their own (the domain, the container).
+
+#include <initializer_list>
+#include <string_view>
+
+#include "scene_json.hpp"
+#include "scene_values.hpp"
+#include "tide/core/scene.hpp"
+
+namespace tide::io {
+
+scene::Box read_box(const ValueReader& values, const Node& node);
+scene::Ball read_ball(const ValueReader& values, const Node& node);
+scene::Plane read_plane(const ValueReader& values, const Node& node);
+
+/// A box's "min" corner, read before its "max".
+void read_min_corner(const ValueReader& values, const Node& node, scene::Box& box);
+
+/// A box's "max" corner: above "min" on every axis.
+void read_max_corner(const ValueReader& values, const Node& node, scene::Box& box);
+
+/// The one key of `object` among `shapes`.
+std::string_view shape_key(const ValueReader& values, const Node& object,
+                           std::initializer_list<std::string_view> shapes);
+
+}  // namespace tide::io

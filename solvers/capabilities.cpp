@@ -1,0 +1,78 @@
+#include "tide/solvers/capabilities.hpp"
+
+#include <string>
+
+#include "simulation_setup.hpp"
+#include "tide/core/scene_error.hpp"
+#include "tide/solvers/simulation.hpp"
+
+namespace tide {
+namespace {
+
+// Built by appending: GCC 12 warns falsely (-Wrestrict) on "\"" + std::string(...).
+std::string quoted_scheme(scene::Scheme scheme) {
+  std::string text = "\"";
+  text += scheme_name(scheme);
+  text += '"';
+  return text;
+}
+
+[[noreturn]] void refuse(const scene::Scene& scene, std::string path, std::string supported, std::string found) {
+  throw scene::SceneError(scene.source, std::move(path), std::move(supported), std::move(found));
+}
+
+/// The multiphase formulation is number-density summation (docs/multiphase.md): a continuity
+/// density or an artificial stress per material is not implemented; the incompressible schemes'
+/// pressure solve holds density ratios up to scene::max_incompressible_density_ratio.
+void check_phases(const scene::Scene& scene, std::size_t fluids) {
+  const scene::Solver& solver = scene.solver;
+  if (fluids < 2) return;
+  const double ratio = scene::fluid_density_ratio(scene);
+  if (solver.scheme != scene::Scheme::wcsph && ratio > scene::max_incompressible_density_ratio) {
+    const std::string limit = setup::format_number(scene::max_incompressible_density_ratio);
+    refuse(scene, "/solver/scheme",
+           "\"wcsph\" for fluids whose rest densities differ by more than " + limit +
+               " times (multiphase dfsph and iisph take " + limit + ")",
+           quoted_scheme(solver.scheme) + " with a ratio of " + setup::format_number(ratio));
+  }
+  if (solver.density != scene::DensityMethod::summation)
+    refuse(scene, "/solver/density", "\"summation\" for a scene with several fluid materials (number density)",
+           "\"continuity\"");
+  if (solver.artificial_stress > 0)
+    refuse(scene, "/solver/artificial_stress", "0 for a scene with several fluid materials",
+           setup::format_number(solver.artificial_stress));
+}
+
+/// Surface tension is implemented in the WCSPH momentum pass only; csf takes the colour gradient
+/// between exactly two fluids, and no model pairs more than two.
+void check_surface_tension(const scene::Scene& scene, std::size_t fluids) {
+  const scene::SurfaceTensionModel model = scene.solver.surface_tension.model;
+  if (model == scene::SurfaceTensionModel::none) return;
+  if (scene.solver.scheme != scene::Scheme::wcsph)
+    refuse(scene, "/solver/scheme", "\"wcsph\" with surface tension", quoted_scheme(scene.solver.scheme));
+  if (model == scene::SurfaceTensionModel::csf && fluids != 2)
+    refuse(scene, "/solver/surface_tension/model", "a model for this scene: \"csf\" needs exactly two fluid materials",
+           "\"csf\" with " + std::to_string(fluids) + " fluid material" + (fluids == 1 ? "" : "s"));
+  if (fluids > 2)
+    refuse(scene, "/solver/surface_tension/model", "surface tension between at most two fluid materials",
+           std::to_string(fluids) + " fluid materials");
+}
+
+}  // namespace
+
+void check_capabilities(const scene::Scene& scene) {
+  const std::size_t fluids = scene::fluid_material_count(scene);
+  check_phases(scene, fluids);
+  check_surface_tension(scene, fluids);
+  // The phase index exists in multiphase scenes only.
+  for (std::size_t k = 0; k < scene.output.fields.size(); ++k) {
+    if (scene.output.fields[k] == "phase" && fluids < 2)
+      refuse(scene, "/output/fields/" + std::to_string(k),
+             "a field this scene has (\"phase\" needs several fluid materials)", "\"phase\"");
+  }
+  // The inflow's buffer is applied at the end of a WCSPH step only.
+  if (scene.domain.inflow && scene.solver.scheme != scene::Scheme::wcsph)
+    refuse(scene, "/solver/scheme", "\"wcsph\" with a domain inflow", quoted_scheme(scene.solver.scheme));
+}
+
+}  // namespace tide
