@@ -1,6 +1,7 @@
 #include "tide/core/particle_set.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -33,12 +34,26 @@ void gather(std::vector<T>& values, std::span<std::byte> scratch_bytes, std::spa
   for_each_particle(order.size(), [&](std::size_t i) { values[i] = scratch[i]; });
 }
 
+// Every set made (not copied) takes the next tag; 0 is no set's.
+std::atomic<std::uint32_t> next_set_tag{1};
+
 }  // namespace
 
 template <int D>
-ParticleSet<D>::ParticleSet() {
+ParticleSet<D>::ParticleSet() : tag_(next_set_tag.fetch_add(1, std::memory_order_relaxed)) {
   id_ = add_index("id");
   position_ = add_vector("position");
+}
+
+template <int D>
+void ParticleSet<D>::throw_foreign_handle(std::uint32_t set) {
+  throw std::logic_error(set == 0 ? "a default-constructed field handle names no field"
+                                  : "a field handle used on a particle set other than the one that made it");
+}
+
+template <int D>
+void ParticleSet<D>::throw_absent_field() {
+  throw std::logic_error("an optional field this particle set does not have was read");
 }
 
 template <int D>
@@ -93,40 +108,42 @@ std::size_t ParticleSet<D>::add(std::string_view name, FieldKind kind) {
 
 template <int D>
 ScalarField ParticleSet<D>::add_scalar(std::string_view name) {
-  return {add(name, FieldKind::scalar)};
+  return {add(name, FieldKind::scalar), tag_};
 }
 template <int D>
 VectorField ParticleSet<D>::add_vector(std::string_view name) {
-  return {add(name, FieldKind::vector)};
+  return {add(name, FieldKind::vector), tag_};
 }
 template <int D>
 IndexField ParticleSet<D>::add_index(std::string_view name) {
-  return {add(name, FieldKind::index)};
+  return {add(name, FieldKind::index), tag_};
 }
 template <int D>
 ScalarField ParticleSet<D>::scalar(std::string_view name) const {
-  return {require(name, FieldKind::scalar).slot};
+  return {require(name, FieldKind::scalar).slot, tag_};
 }
 template <int D>
 VectorField ParticleSet<D>::vector(std::string_view name) const {
-  return {require(name, FieldKind::vector).slot};
+  return {require(name, FieldKind::vector).slot, tag_};
 }
 template <int D>
 IndexField ParticleSet<D>::index(std::string_view name) const {
-  return {require(name, FieldKind::index).slot};
+  return {require(name, FieldKind::index).slot, tag_};
 }
 
 template <int D>
 VectorView<D> ParticleSet<D>::operator[](VectorField field) {
+  const std::size_t slot = checked(field);
   VectorView<D> view;
-  for (int d = 0; d < D; ++d) view.component[d] = reals_[field.slot + d].data();
+  for (int d = 0; d < D; ++d) view.component[d] = reals_[slot + d].data();
   return view;
 }
 
 template <int D>
 ConstVectorView<D> ParticleSet<D>::operator[](VectorField field) const {
+  const std::size_t slot = checked(field);
   ConstVectorView<D> view;
-  for (int d = 0; d < D; ++d) view.component[d] = reals_[field.slot + d].data();
+  for (int d = 0; d < D; ++d) view.component[d] = reals_[slot + d].data();
   return view;
 }
 

@@ -99,7 +99,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   fluid_ = setup::make_fluid<D>(scene, particle_mass, rest_density_, fluid_fields_, phases());
   fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
   solve_fields_ = {fluid_.add_scalar("pressure_factor"), fluid_.add_vector("predicted_velocity"),
-                   fluid_.add_scalar("density_excess"), ScalarField{}};
+                   fluid_.add_scalar("density_excess"), std::nullopt};
   if (scheme_.divergence_solve) solve_fields_.divergence_pressure = fluid_.add_scalar("divergence_pressure");
   setup::add_wall_contacts<D>(scene, particle_mass, rest_density_, interactions_);
   // The first solve starts from the pressure of the fluid at rest: a Jacobi sweep carries
@@ -458,7 +458,7 @@ SolveReport IncompressibleSph<D>::solve_divergence(Real dt) {
   auto predicted = fluid_[solve_fields_.predicted_velocity];
   const auto v = std::as_const(fluid_)[fluid_fields_.velocity];
   for_each_particle(fluid_.size(), [&](std::size_t i) { predicted.set(i, v[i]); });
-  return solve(solve_fields_.divergence_pressure, Target::divergence, scheme_.divergence_warm_start, Vector<D>::Zero(),
+  return solve(*solve_fields_.divergence_pressure, Target::divergence, scheme_.divergence_warm_start, Vector<D>::Zero(),
                dt);
 }
 

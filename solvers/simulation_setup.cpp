@@ -175,11 +175,11 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
             fluid.scalar("mass"),
             fluid.add_scalar("density"),
             fluid.add_scalar("pressure"),
-            ScalarField{},
-            VectorField{},
-            ScalarField{},
-            IndexField{},
-            VectorField{}};
+            std::nullopt,
+            std::nullopt,
+            std::nullopt,
+            std::nullopt,
+            std::nullopt};
   for (Real& rho : fluid[fields.density]) rho = rest_density;
   if (phases) {
     fields.phase = fluid.add_index("phase");

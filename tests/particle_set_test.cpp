@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -145,6 +146,32 @@ TEST(ScratchArena, HandsOutAlignedDisjointSpansPerPhase) {
   EXPECT_EQ(static_cast<void*>(arena.take<Real>(1).data()), static_cast<void*>(keys.data()));
   arena.release();
   EXPECT_EQ(arena.bytes(), 0u);
+}
+
+// A handle names a field of the set that made it (and of that set's copies); a default handle,
+// another set's handle or an absent optional field is refused instead of reading some other
+// field (a default handle used to read slot 0, position x).
+TEST(ParticleSetHandles, AreRefusedOnAnotherSetOrWhenDefaultOrAbsent) {
+  ParticleSet<2> fluid;
+  fluid.append(3);
+  const ScalarField density = fluid.add_scalar("density");
+  fluid[density][1] = 7;
+  const ParticleSet<2> copy = fluid;
+  EXPECT_EQ(copy[density][1], 7) << "a copy reads through the original's handles";
+
+  ParticleSet<2> walls;
+  walls.append(3);
+  walls.add_scalar("density");
+  EXPECT_THROW(walls[density], std::logic_error);
+  EXPECT_THROW(walls[fluid.position()], std::logic_error);
+  EXPECT_THROW(fluid[ScalarField{}], std::logic_error);
+  EXPECT_THROW(fluid[VectorField{}], std::logic_error);
+  EXPECT_THROW(fluid[IndexField{}], std::logic_error);
+
+  const std::optional<ScalarField> absent;
+  EXPECT_THROW(fluid[absent], std::logic_error);
+  const std::optional<ScalarField> present = density;
+  EXPECT_EQ(fluid[present][1], 7);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -17,15 +18,21 @@ namespace tide {
 enum class FieldKind { scalar, vector, index };
 
 /// Typed handles to fields. A pass resolves its handles once when the pipeline is built, so hot
-/// loops never look a field up by name.
+/// loops never look a field up by name. A handle names its slot and the set that made it (and
+/// that set's copies); a default-constructed handle names none. Reading a set through a handle
+/// of another set, or a default one, throws std::logic_error (a check per pass, not per
+/// particle). A field a scene may lack is a std::optional handle; reading an absent one throws.
 struct ScalarField {
   std::size_t slot = 0;
+  std::uint32_t set = 0;  // the owning set's tag; 0: no set
 };
 struct VectorField {
   std::size_t slot = 0;
+  std::uint32_t set = 0;
 };
 struct IndexField {
   std::size_t slot = 0;
+  std::uint32_t set = 0;
 };
 
 /// Read-write view of a vector field: D pointers, one per component array.
@@ -102,12 +109,21 @@ class ParticleSet {
   VectorField position() const { return position_; }
   IndexField id() const { return id_; }
 
-  std::span<Real> operator[](ScalarField field) { return {reals_[field.slot].data(), size_}; }
-  std::span<const Real> operator[](ScalarField field) const { return {reals_[field.slot].data(), size_}; }
-  std::span<Index> operator[](IndexField field) { return {indices_[field.slot].data(), size_}; }
-  std::span<const Index> operator[](IndexField field) const { return {indices_[field.slot].data(), size_}; }
+  std::span<Real> operator[](ScalarField field) { return {reals_[checked(field)].data(), size_}; }
+  std::span<const Real> operator[](ScalarField field) const { return {reals_[checked(field)].data(), size_}; }
+  std::span<Index> operator[](IndexField field) { return {indices_[checked(field)].data(), size_}; }
+  std::span<const Index> operator[](IndexField field) const { return {indices_[checked(field)].data(), size_}; }
   VectorView<D> operator[](VectorField field);
   ConstVectorView<D> operator[](VectorField field) const;
+  /// An optional field (one a scene may lack); std::logic_error when it is absent.
+  template <class Handle>
+  auto operator[](const std::optional<Handle>& field) {
+    return (*this)[present(field)];
+  }
+  template <class Handle>
+  auto operator[](const std::optional<Handle>& field) const {
+    return (*this)[present(field)];
+  }
 
   /// Reorders every field by one gather: new[i] = old[order[i]]. `order` may be shorter than
   /// size(); the particles it does not name are removed. Entries must be distinct. Each field is
@@ -131,10 +147,23 @@ class ParticleSet {
   void add_memory(MemoryUsage& usage, const std::string& owner) const;
 
  private:
+  template <class Handle>
+  std::size_t checked(const Handle& field) const {
+    if (field.set != tag_) throw_foreign_handle(field.set);
+    return field.slot;
+  }
+  template <class Handle>
+  static const Handle& present(const std::optional<Handle>& field) {
+    if (!field) throw_absent_field();
+    return *field;
+  }
+  [[noreturn]] static void throw_foreign_handle(std::uint32_t set);
+  [[noreturn]] static void throw_absent_field();
   const FieldInfo* find(std::string_view name) const;
   const FieldInfo& require(std::string_view name, FieldKind kind) const;
   std::size_t add(std::string_view name, FieldKind kind);
 
+  std::uint32_t tag_;  // a number of its own, shared with its copies: what its handles carry
   std::size_t size_ = 0;
   Index next_id_ = 0;
   std::vector<FieldInfo> fields_;

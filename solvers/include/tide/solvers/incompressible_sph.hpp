@@ -24,7 +24,7 @@ struct PressureSolveFields {
   ScalarField factor;  // α_i = 1/|∂ρ*_i/∂p_i| · Δt²: the Jacobi diagonal (passes/pressure_solve.hpp)
   VectorField predicted_velocity;  // v*: the velocity before the pressure of the solve in progress
   ScalarField density_excess;      // ρ*_i − ρ0 (density solve) or Δt Dρ_i/Dt (divergence solve) of the last sweep
-  ScalarField divergence_pressure;  // DFSPH only: the pressure of the divergence solve (slot unused otherwise)
+  std::optional<ScalarField> divergence_pressure;  // DFSPH only: the pressure of the divergence solve
 };
 
 /// Incompressible SPH, DFSPH or IISPH (IncompressibleScheme says which): density by summation,

@@ -15,11 +15,11 @@ struct FluidFields {
   ScalarField mass;
   ScalarField density;
   ScalarField pressure;
-  ScalarField density_rate;         // continuity density, and the incompressible solves (slot unused otherwise)
-  VectorField shift;                // only with particle shifting (slot unused otherwise)
-  ScalarField position_divergence;  // only with particle shifting: ∇·r, the free-surface marker
-  IndexField phase;                 // only with several fluid materials: the particle's material index
-  VectorField colour_gradient;      // only with surface tension csf (∇c) or akinci (the surface normal)
+  std::optional<ScalarField> density_rate;         // continuity density, and the incompressible solves
+  std::optional<VectorField> shift;                // particle shifting
+  std::optional<ScalarField> position_divergence;  // particle shifting: ∇·r, the free-surface marker
+  std::optional<IndexField> phase;                 // several fluid materials: the particle's material index
+  std::optional<VectorField> colour_gradient;      // surface tension csf (∇c) or akinci (the surface normal)
 };
 
 /// Handles of the wall-particle fields (Adami, Hu & Adams 2012).
