@@ -54,7 +54,9 @@ class Contact {
   ParticleSet<D>& particles() { return particles_; }
   const ParticleSet<D>& particles() const { return particles_; }
   const WallFields<D>& fields() const { return fields_; }
-  ConstVectorView<D> positions() const { return particles_[fields_.position]; }
+  /// The particles' positions as of the last Interactions::update (or add_contact), kept so that
+  /// a walk does not look the field up once per fluid particle.
+  const ConstVectorView<D>& positions() const { return positions_; }
   const NeighborGrid<D>& grid() const { return grid_; }
 
   /// Calls f(b, x_ib, r²) for every contact neighbour b of fluid particle i (NeighborList::for_each).
@@ -105,6 +107,7 @@ class Contact {
   NeighborList<D> fluid_to_contact_list_;
   NeighborList<D> contact_to_fluid_list_;
   std::vector<Real> built_x_;  // moving, with a skin: positions at the last build, by component
+  ConstVectorView<D> positions_;
 };
 
 }  // namespace tide

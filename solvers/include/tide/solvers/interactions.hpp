@@ -47,6 +47,7 @@ class Interactions {
         std::make_unique<Contact<D>>(std::move(name), role, motion, std::move(particles), std::move(fields),
                                      fluid_grid_.domain(), fluid_grid_.support_radius(), fluid_grid_.skin()));
     contact.grid_.update(contact.particles_, arena_);
+    contact.positions_ = std::as_const(contact.particles_)[contact.fields_.position];
     if (!contact.moves()) {
       contact.grid_.release_update_memory();
       arena_.release();
@@ -71,10 +72,12 @@ class Interactions {
     const bool skin = fluid_grid_.skin() > 0;
     std::size_t removed = 0;
     const auto fluid_x = std::as_const(fluid)[fluid.position()];
+    for (auto& contact : contacts_) contact->positions_ = std::as_const(contact->particles_)[contact->fields_.position];
     if (!skin || !candidates_hold(fluid)) {
       removed = fluid_grid_.update(fluid, arena_);
       for (auto& contact : contacts_) {
         if (contact->moves()) contact->grid_.update(contact->particles_, arena_);
+        contact->positions_ = std::as_const(contact->particles_)[contact->fields_.position];
         contact->fluid_to_contact_.build(fluid_grid_, contact->grid_);
         contact->contact_to_fluid_.build(contact->grid_, fluid_grid_);
       }
