@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -144,6 +145,48 @@ std::vector<SeriesRecorder<D>> series_recorders(const scene::Scene& scene, const
   return recorders;
 }
 
+/// The frames of the moving walls (obstacles with a motion), one run of frames per contact, named
+/// after its key path: walls.obstacles[2] writes walls_obstacles_2_NNNNNN.h5 and
+/// walls_obstacles_2.xdmf beside the fluid's frames.
+template <int D>
+class MovingWallFrames {
+ public:
+  MovingWallFrames(const Simulation<D>& simulation, const std::filesystem::path& directory) {
+    const Interactions<D>& interactions = simulation.interactions();
+    for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+      if (!interactions.contact(k).moves()) continue;
+      contacts_.push_back(k);
+      writers_.emplace_back(directory, std::vector<std::string>{"position", "surface_velocity", "pressure"},
+                            run_name(interactions.contact(k).name()));
+    }
+  }
+
+  void write(const Simulation<D>& simulation) {
+    for (std::size_t w = 0; w < writers_.size(); ++w) {
+      writers_[w].write(simulation.interactions().contact(contacts_[w]).particles(), simulation.time(),
+                        simulation.step_count());
+    }
+  }
+
+ private:
+  // "walls.obstacles[2]" -> "walls_obstacles_2": letters and digits kept, runs of others one '_'.
+  static std::string run_name(const std::string& contact) {
+    std::string name;
+    for (const char c : contact) {
+      if (std::isalnum(static_cast<unsigned char>(c))) {
+        name += c;
+      } else if (!name.empty() && name.back() != '_') {
+        name += '_';
+      }
+    }
+    while (!name.empty() && name.back() == '_') name.pop_back();
+    return name;
+  }
+
+  std::vector<std::size_t> contacts_;
+  std::vector<io::FrameWriter<D>> writers_;
+};
+
 template <int D>
 int run(const scene::Scene& scene, const RunOptions& options, const std::filesystem::path& output_directory) {
   std::unique_ptr<Simulation<D>> simulation;
@@ -159,6 +202,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
     return exit_bad_input;
   }
   io::FrameWriter<D> writer(output_directory, scene.output.fields);
+  MovingWallFrames<D> wall_frames(*simulation, output_directory);
   const double end_time = scene.time.end;
   const double interval = scene.time.output_interval;
   const std::size_t particles = simulation->fluid().size();
@@ -174,6 +218,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   TimeStepTally run_tally, frame_tally;
   SolveTallies run_solves, frame_solves;
   writer.write(simulation->fluid(), simulation->time(), 0);
+  wall_frames.write(*simulation);
   const auto record_series = [&] {
     for (auto& recorder : series) recorder.record(*simulation);
   };
@@ -196,6 +241,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
       if (frames.due(time) || time >= end_time) {
         last_frame = writer.write(simulation->fluid(), time, simulation->step_count(),
                                   frame_attributes(frame_tally, frame_solves));
+        wall_frames.write(*simulation);
         write_series();
         frame_tally = {};
         frame_solves = {};

@@ -72,16 +72,21 @@ scene::Plane read_plane(const ValueReader& values, const Node& node) {
   return plane;
 }
 
-std::string_view shape_key(const ValueReader& values, const Node& object,
-                           std::initializer_list<std::string_view> shapes) {
+std::string_view one_key_of(const ValueReader& values, const Node& object, std::initializer_list<std::string_view> keys,
+                            std::string_view what) {
   std::vector<std::string_view> given;
-  std::copy_if(shapes.begin(), shapes.end(), std::back_inserter(given),
-               [&](std::string_view shape) { return child(object, shape).present(); });
+  std::copy_if(keys.begin(), keys.end(), std::back_inserter(given),
+               [&](std::string_view key) { return child(object, key).present(); });
   if (given.size() != 1) {
-    values.fail(object.path, "exactly one shape key of " + quoted_list(shapes),
+    values.fail(object.path, "exactly one " + std::string(what) + " of " + quoted_list(keys),
                 given.empty() ? "none" : quoted_list(given));
   }
   return given.front();
+}
+
+std::string_view shape_key(const ValueReader& values, const Node& object,
+                           std::initializer_list<std::string_view> shapes) {
+  return one_key_of(values, object, shapes, "shape key");
 }
 
 }  // namespace tide::io

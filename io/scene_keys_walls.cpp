@@ -32,6 +32,7 @@ scene::Obstacle read_obstacle(const ValueReader& values, const Node& node) {
     obstacle.shape = read_ball(values, child(node, shape));
   } else {
     obstacle.shape = read_plane(values, child(node, shape));
+    if (obstacle.motion) values.fail(child(node, "motion"), "no motion on a plane (a half-space cannot move)");
   }
   return obstacle;
 }
@@ -54,7 +55,7 @@ std::span<const Key<scene::Walls>> wall_keys() {
        }},
       {"obstacles", "array of objects", "–", "`[]`",
        "Solid shapes inside the domain, each `{\"box\": ...}`, `{\"ball\": ...}` or `{\"plane\": ...}` (exactly "
-       "one shape key), with an optional `\"velocity\"` and `\"slip\"`.",
+       "one shape key), with an optional `\"velocity\"`, `\"slip\"` and `\"motion\"`.",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Walls& walls) {
          for (const Node& entry : values.elements(value, 0, "an array of obstacles"))
@@ -84,7 +85,7 @@ std::span<const Key<scene::Container>> container_keys() {
 }
 
 std::span<const Key<scene::Obstacle>> obstacle_keys() {
-  static constexpr std::array<Key<scene::Obstacle>, 5> keys{{
+  static constexpr std::array<Key<scene::Obstacle>, 6> keys{{
       // Exactly one shape key (read_obstacle).
       {"box", "[box](#box)", "–", "–", "A solid box."},
       {"ball", "[ball](#ball)", "–", "–", "A solid ball (a disc in 2D)."},
@@ -101,6 +102,15 @@ std::span<const Key<scene::Obstacle>> obstacle_keys() {
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Obstacle& obstacle) {
          obstacle.slip = values.choice(value, wall_slip_names);
+       }},
+      {"motion", "object: `rotation`, `oscillation`, `flap` or `table`", "–", "none",
+       "A prescribed rigid motion (docs/bodies.md); its particles move, with the motion's velocity as the surface "
+       "velocity. Not with `velocity`.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Obstacle& obstacle) {
+         if (obstacle.velocity != scene::Vec{})
+           values.fail(value, "no motion on an obstacle with a velocity (the motion gives its surface velocity)");
+         obstacle.motion = read_motion(values, value);
        }},
   }};
   return keys;

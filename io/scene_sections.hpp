@@ -15,6 +15,9 @@ void read_kernel(const ValueReader& values, const Node& node, scene::Scene& scen
 void read_materials(const ValueReader& values, const Node& node, scene::Scene& scene);
 void read_fluid(const ValueReader& values, const Node& node, scene::Scene& scene);
 void read_walls(const ValueReader& values, const Node& node, scene::Scene& scene);
+
+/// An obstacle's `motion`: an object with exactly one of "rotation", "oscillation", "flap", "table".
+scene::Motion read_motion(const ValueReader& values, const Node& node);
 /// Absent: derived from the container.
 void read_domain(const ValueReader& values, const Node& node, scene::Scene& scene);
 void read_solver(const ValueReader& values, const Node& node, scene::Scene& scene);

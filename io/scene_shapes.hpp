@@ -22,6 +22,10 @@ void read_min_corner(const ValueReader& values, const Node& node, scene::Box& bo
 /// A box's "max" corner: above "min" on every axis.
 void read_max_corner(const ValueReader& values, const Node& node, scene::Box& box);
 
+/// The one key of `object` among `keys`; otherwise an error expecting "exactly one <what> of ...".
+std::string_view one_key_of(const ValueReader& values, const Node& object, std::initializer_list<std::string_view> keys,
+                            std::string_view what);
+
 /// The one key of `object` among `shapes`.
 std::string_view shape_key(const ValueReader& values, const Node& object,
                            std::initializer_list<std::string_view> shapes);

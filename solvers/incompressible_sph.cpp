@@ -88,7 +88,8 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
       kinematic_viscosity_(static_cast<Real>(setup::reference_material(scene).kinematic_viscosity)),
       gravity_(setup::gravity_at<D>(scene, scene.time.start)),
       interactions_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
-                    setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
+                    setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)),
+      moving_walls_(setup::grid_domain<D>(scene)) {
   if (!(reference_sound_speed_ > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   check_capabilities(scene);
@@ -101,7 +102,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   solve_fields_ = {fluid_.add_scalar("pressure_factor"), fluid_.add_vector("predicted_velocity"),
                    fluid_.add_scalar("density_excess"), std::nullopt};
   if (scheme_.divergence_solve) solve_fields_.divergence_pressure = fluid_.add_scalar("divergence_pressure");
-  setup::add_wall_contacts<D>(scene, particle_mass, rest_density_, interactions_);
+  setup::add_wall_contacts<D>(scene, particle_mass, rest_density_, interactions_, moving_walls_);
   // The first solve starts from the pressure of the fluid at rest: a Jacobi sweep carries
   // information about one kernel support, so from zero a deep column would need of the order of
   // (depth / h)² sweeps to take its own weight.
@@ -134,6 +135,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
   time_ = scene.time.start;
 
+  if (!moving_walls_.empty()) moving_walls_.move_to(0, step_count_, time_);  // their velocity at the start
   std::vector<Stage> start{neighbor_search_stage()};
   for (Stage& stage : density_stages()) start.push_back(std::move(stage));
   for (Stage& stage : force_stages()) start.push_back(std::move(stage));
@@ -157,6 +159,12 @@ Pipeline IncompressibleSph<D>::build_pipeline() {
   stages.push_back({"drift", [this](StepContext& c) { drift(c.dt); }});
   if (scene_.solver.shifting != scene::Shifting::none)
     stages.push_back({"particle_shifting", [this](StepContext& c) { shift_particles(c.dt); }});
+  if (!moving_walls_.empty()) {
+    stages.push_back({"prescribed_motion", [this](StepContext& c) {
+                        const double end = time_ + c.dt;  // where the walls are at the step's end
+                        moving_walls_.move_to(end - scene_.time.start, step_count_ + 1, end);
+                      }});
+  }
   stages.push_back(neighbor_search_stage());
   for (Stage& stage : density_stages()) stages.push_back(std::move(stage));
   if (scheme_.divergence_solve) {

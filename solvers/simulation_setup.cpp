@@ -37,23 +37,44 @@ ParticleSet<D> make_particles(const ParticleSamples<D>& samples, Real mass, cons
   return set;
 }
 
-// The slip of the wall that made a wall sample (ParticleSamples::makers).
-scene::WallSlip slip_of(const scene::Scene& scene, std::size_t maker) {
-  if (maker == 0) return scene.walls.slip;
-  return scene.walls.obstacles[maker - 1].slip.value_or(scene.walls.slip);
+// The obstacle that made a wall sample (ParticleSamples::makers); none for the container.
+const scene::Obstacle* maker_of(const scene::Scene& scene, std::size_t maker) {
+  return maker == 0 ? nullptr : &scene.walls.obstacles[maker - 1];
 }
 
-// The wall samples whose wall has slip `slip`, in their order.
-template <int D>
-ParticleSamples<D> walls_with_slip(const scene::Scene& scene, const ParticleSamples<D>& walls, scene::WallSlip slip) {
+// The wall samples whose maker passes `keep`, in their order.
+template <int D, class Keep>
+ParticleSamples<D> walls_made_by(const scene::Scene& scene, const ParticleSamples<D>& walls, Keep&& keep) {
   ParticleSamples<D> kept;
   for (std::size_t i = 0; i < walls.size(); ++i) {
-    if (slip_of(scene, walls.makers[i]) != slip) continue;
+    if (!keep(maker_of(scene, walls.makers[i]))) continue;
     kept.positions.push_back(walls.positions[i]);
     kept.velocities.push_back(walls.velocities[i]);
     kept.makers.push_back(walls.makers[i]);
   }
   return kept;
+}
+
+// The samples of the walls that stay in place and have slip `slip`.
+template <int D>
+ParticleSamples<D> fixed_walls_with_slip(const scene::Scene& scene, const ParticleSamples<D>& walls,
+                                         scene::WallSlip slip) {
+  return walls_made_by<D>(scene, walls, [&](const scene::Obstacle* obstacle) {
+    if (!obstacle) return scene.walls.slip == slip;
+    return !obstacle->motion && obstacle->slip.value_or(scene.walls.slip) == slip;
+  });
+}
+
+// The fields every wall contact has: position, mass, density ρ0 and pressure, and the mirrored
+// velocity of the no-slip condition.
+template <int D>
+WallFields<D> add_wall_fields(ParticleSet<D>& walls, scene::WallSlip slip, Real rest_density) {
+  WallFields<D> fields{
+      walls.position(), std::nullopt, walls.scalar("mass"), walls.add_scalar("density"), walls.add_scalar("pressure"),
+      std::nullopt,     std::nullopt};
+  if (slip == scene::WallSlip::no_slip) fields.velocity = walls.add_vector("velocity");
+  for (Real& rho : walls[fields.density]) rho = rest_density;
+  return fields;
 }
 
 // The fixed wall contact of `samples` (none when empty).
@@ -64,14 +85,29 @@ void add_wall_contact(std::string name, const ParticleSamples<D>& samples, scene
   const bool moving = std::any_of(samples.velocities.begin(), samples.velocities.end(),
                                   [](const Vector<D>& v) { return v != Vector<D>::Zero(); });
   ParticleSet<D> walls = make_particles<D>(samples, mass, moving ? "surface_velocity" : "");
-  WallFields<D> fields{
-      walls.position(), std::nullopt, walls.scalar("mass"), walls.add_scalar("density"), walls.add_scalar("pressure"),
-      std::nullopt};
-  if (slip == scene::WallSlip::no_slip) fields.velocity = walls.add_vector("velocity");
+  WallFields<D> fields = add_wall_fields<D>(walls, slip, rest_density);
   if (moving) fields.surface_velocity = walls.vector("surface_velocity");
-  for (Real& rho : walls[fields.density]) rho = rest_density;
   // Wall particles may move along their surface (a conveyor, a lid) but keep their place.
   interactions.add_contact(std::move(name), ContactRole::wall, ContactMotion::fixed, std::move(walls), fields);
+}
+
+// Obstacle `k`, which has a prescribed motion: a moving contact of its own, named by its key path.
+template <int D>
+void add_moving_obstacle(const scene::Scene& scene, std::size_t k, const ParticleSamples<D>& samples, Real mass,
+                         Real rest_density, Interactions<D>& interactions, MovingWalls<D>& moving) {
+  const scene::Obstacle& obstacle = scene.walls.obstacles[k];
+  const ParticleSamples<D> own =
+      walls_made_by<D>(scene, samples, [&](const scene::Obstacle* maker) { return maker == &obstacle; });
+  if (own.size() == 0) return;
+  ParticleSet<D> walls = make_particles<D>(own, mass, "surface_velocity");
+  WallFields<D> fields = add_wall_fields<D>(walls, obstacle.slip.value_or(scene.walls.slip), rest_density);
+  fields.surface_velocity = walls.vector("surface_velocity");
+  fields.acceleration = walls.add_vector("acceleration");
+  const VectorField start = walls.add_vector("start_position");
+  for (std::size_t b = 0; b < walls.size(); ++b) walls[start].set(b, own.positions[b]);
+  Contact<D>& contact = interactions.add_contact("walls.obstacles[" + std::to_string(k) + "]", ContactRole::wall,
+                                                 ContactMotion::moving, std::move(walls), fields);
+  moving.add(contact, *obstacle.motion, start);
 }
 
 // Σ_k W(|k| Δx) over the lattice around one particle: the summation density of a particle deep
@@ -200,14 +236,19 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
 }
 
 template <int D>
-void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, Interactions<D>& interactions) {
+void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, Interactions<D>& interactions,
+                       MovingWalls<D>& moving) {
   const ParticleSamples<D> samples = sample_walls<D>(scene);
   const scene::WallSlip slip = scene.walls.slip;
   const scene::WallSlip other =
       slip == scene::WallSlip::no_slip ? scene::WallSlip::free_slip : scene::WallSlip::no_slip;
-  add_wall_contact<D>("walls", walls_with_slip<D>(scene, samples, slip), slip, mass, rest_density, interactions);
+  add_wall_contact<D>("walls", fixed_walls_with_slip<D>(scene, samples, slip), slip, mass, rest_density, interactions);
   add_wall_contact<D>(other == scene::WallSlip::no_slip ? "no-slip walls" : "free-slip walls",
-                      walls_with_slip<D>(scene, samples, other), other, mass, rest_density, interactions);
+                      fixed_walls_with_slip<D>(scene, samples, other), other, mass, rest_density, interactions);
+  for (std::size_t k = 0; k < scene.walls.obstacles.size(); ++k) {
+    if (scene.walls.obstacles[k].motion)
+      add_moving_obstacle<D>(scene, k, samples, mass, rest_density, interactions, moving);
+  }
 }
 
 namespace {
@@ -304,7 +345,7 @@ template GridDomain<2> grid_domain<2>(const scene::Scene&);
 template Real particle_mass<2>(const scene::Scene&, const AnyKernel<2>&, Real);
 template Phases make_phases<2>(const scene::Scene&, const AnyKernel<2>&);
 template ParticleSet<2> make_fluid<2>(const scene::Scene&, Real, Real, FluidFields<2>&, const Phases*);
-template void add_wall_contacts<2>(const scene::Scene&, Real, Real, Interactions<2>&);
+template void add_wall_contacts<2>(const scene::Scene&, Real, Real, Interactions<2>&, MovingWalls<2>&);
 template void hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, Real, std::span<Real>);
 template void layered_hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, std::span<const Real>,
                                               std::span<Real>);
@@ -313,7 +354,7 @@ template GridDomain<3> grid_domain<3>(const scene::Scene&);
 template Real particle_mass<3>(const scene::Scene&, const AnyKernel<3>&, Real);
 template Phases make_phases<3>(const scene::Scene&, const AnyKernel<3>&);
 template ParticleSet<3> make_fluid<3>(const scene::Scene&, Real, Real, FluidFields<3>&, const Phases*);
-template void add_wall_contacts<3>(const scene::Scene&, Real, Real, Interactions<3>&);
+template void add_wall_contacts<3>(const scene::Scene&, Real, Real, Interactions<3>&, MovingWalls<3>&);
 template void hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, Real, std::span<Real>);
 template void layered_hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, std::span<const Real>,
                                               std::span<Real>);

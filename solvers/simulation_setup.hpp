@@ -13,6 +13,7 @@
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/interactions.hpp"
+#include "tide/solvers/moving_walls.hpp"
 #include "tide/solvers/phases.hpp"
 #include "tide/solvers/wcsph.hpp"
 
@@ -49,11 +50,13 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
 
 /// Wall particles sampled from the scene with the fields of WallFields (a velocity only for no-slip
 /// walls, a surface velocity only where some wall moves along its surface), density ρ0 and
-/// pressure zero, added to `interactions` as fixed wall contacts: "walls", those of the scene's
-/// walls.slip, and, where obstacles set the other slip, "free-slip walls" or "no-slip walls"
-/// (none where the scene has no wall of that slip).
+/// pressure zero, added to `interactions` as wall contacts: fixed ones, "walls", those of the
+/// scene's walls.slip, and, where obstacles set the other slip, "free-slip walls" or "no-slip
+/// walls" (none where the scene has no wall of that slip); then one moving contact for each
+/// obstacle with a motion, named by its key path ("walls.obstacles[2]") and handed to `moving`.
 template <int D>
-void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, Interactions<D>& interactions);
+void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, Interactions<D>& interactions,
+                       MovingWalls<D>& moving);
 
 /// The volume of one wall particle, m_b/ρ0 (walls continue the fluid's lattice); 0 without walls.
 template <int D>

@@ -38,7 +38,8 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
            static_cast<Real>(scene.solver.tait_exponent), static_cast<Real>(scene.solver.background_pressure)),
       kinematic_viscosity_(static_cast<Real>(setup::reference_material(scene).kinematic_viscosity)),
       interactions_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
-                    setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)) {
+                    setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)),
+      moving_walls_(setup::grid_domain<D>(scene)) {
   if (!(eos_.sound_speed() > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   check_capabilities(scene);
@@ -52,7 +53,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
     set_hydrostatic_density();
   }
-  setup::add_wall_contacts<D>(scene, particle_mass, eos_.rest_density(), interactions_);
+  setup::add_wall_contacts<D>(scene, particle_mass, eos_.rest_density(), interactions_, moving_walls_);
 
   time_step_rule_.smoothing_length = smoothing_length_;
   time_step_rule_.sound_speed = phases_ ? phases_->fastest_sound : eos_.sound_speed();
@@ -65,6 +66,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
   time_ = scene.time.start;
 
+  if (!moving_walls_.empty()) moving_walls_.move_to(0, step_count_, time_);  // their velocity at the start
   std::vector<Stage> start{neighbor_search_stage()};
   for (Stage& stage : force_stages()) start.push_back(std::move(stage));
   StepContext at_start;  // dt = 0: the forces at the start time
@@ -82,6 +84,12 @@ Pipeline Wcsph<D>::build_pipeline() {
   stages.push_back({"kick_drift", [this](StepContext& c) { kick_drift(c.dt); }});
   if (scene_.domain.inflow) stages.push_back({"inflow_drift", [this](StepContext& c) { impose_inflow(c.dt); }});
   if (injects_phase()) stages.push_back({"inflow_phase", [this](StepContext&) { inject_phase(); }});
+  if (!moving_walls_.empty()) {
+    stages.push_back({"prescribed_motion", [this](StepContext& c) {
+                        const double end = time_ + c.dt;  // where the walls are at the step's end
+                        moving_walls_.move_to(end - scene_.time.start, step_count_ + 1, end);
+                      }});
+  }
   stages.push_back(neighbor_search_stage());
   if (scene_.solver.density == scene::DensityMethod::continuity)
     stages.push_back({"continuity", [this](StepContext& c) { integrate_density(step_gravity(c), c.dt); }});

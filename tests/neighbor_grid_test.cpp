@@ -667,6 +667,7 @@ Contact<3>& add_walls(Interactions<3>& interactions, const std::vector<Vector<3>
                              walls.add_scalar("mass"),
                              walls.add_scalar("density"),
                              walls.add_scalar("pressure"),
+                             std::nullopt,
                              std::nullopt};
   return interactions.add_contact(name, ContactRole::wall, motion, std::move(walls), fields);
 }

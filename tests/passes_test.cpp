@@ -132,14 +132,16 @@ FluidFields<D> add_fluid_fields(ParticleSet<D>& fluid, Real mass) {
   return f;
 }
 
-enum class WallVelocity { none, no_slip, moving };
+enum class WallVelocity { none, no_slip, moving, accelerating };
 
 template <int D>
 WallFields<D> add_wall_fields(ParticleSet<D>& walls, Real mass, WallVelocity velocity) {
   WallFields<D> w;
   w.position = walls.position();
   if (velocity != WallVelocity::none) w.velocity = walls.add_vector("velocity");
-  if (velocity == WallVelocity::moving) w.surface_velocity = walls.add_vector("surface_velocity");
+  if (velocity == WallVelocity::moving || velocity == WallVelocity::accelerating)
+    w.surface_velocity = walls.add_vector("surface_velocity");
+  if (velocity == WallVelocity::accelerating) w.acceleration = walls.add_vector("acceleration");
   w.mass = walls.add_scalar("mass");
   w.density = walls.add_scalar("density");
   w.pressure = walls.add_scalar("pressure");
@@ -454,6 +456,50 @@ void check_wall_state_hydrostatic(int columns) {
 TEST(WallState, HydrostaticPressureAndNoSlipMirror) {
   check_wall_state_hydrostatic<2>(16);
   check_wall_state_hydrostatic<3>(10);
+}
+
+// Walls accelerating upwards at a under fluid at rest relative to them: in their frame the fluid
+// is hydrostatic under g + a, p_f = ρ0 (g + a)(H − y_f), and eq. 27 of Adami et al. 2012 with
+// g − a_w gives p_w = ρ0 (g + a)(H − y_w). Without the acceleration term the walls would read
+// ρ0 g (H − y_w) plus ρ0 a times the weighted mean depth, off by ρ0 a Δx at least.
+template <int D>
+void check_wall_state_accelerating(int columns) {
+  const auto kernel = test_kernel<D>();
+  const int rows = 8;
+  Layer<D> layer(kernel, columns, rows, WallVelocity::accelerating);
+  const Real g = Real(9.81), a = Real(4.5);
+  const Real height = Real(rows) * spacing;
+  Vector<D> gravity = Vector<D>::Zero();
+  gravity[D - 1] = -g;
+  const auto x = std::as_const(layer.fluid)[layer.f.position];
+  auto pressure = layer.fluid[layer.f.pressure];
+  for (std::size_t i = 0; i < layer.fluid.size(); ++i) pressure[i] = rest_density * (g + a) * (height - x[i][D - 1]);
+  ParticleSet<D>& walls = layer.walls().particles();
+  const WallFields<D>& w = layer.walls().fields();
+  auto acceleration = walls[*w.acceleration];
+  for (std::size_t b = 0; b < walls.size(); ++b) acceleration.component[D - 1][b] = a;
+  const passes::WallPressureExtrapolation<D> rule{nullptr, gravity, true};
+  passes::wall_state<D>(kernel, layer.walls(), layer.fluid, layer.f, &rule);
+
+  // The tolerance of HydrostaticPressureAndNoSlipMirror with g + a for g.
+  const int n = lattice_sums<D>(kernel).neighbors;
+  const Real support = kernel.support_radius();
+  const Real tolerance = Real(2 * (n + 3)) * epsilon * rest_density * (g + a) * (height + support);
+  const auto wall_x = std::as_const(walls)[w.position];
+  const auto wall_pressure = std::as_const(walls)[w.pressure];
+  std::size_t beside_fluid = 0;
+  for (std::size_t b = 0; b < walls.size(); ++b) {
+    const Real y = wall_x[b][D - 1];
+    if (spacing / 2 - y >= support) continue;
+    ASSERT_NEAR(wall_pressure[b], rest_density * (g + a) * (height - y), tolerance) << "y " << y;
+    ++beside_fluid;
+  }
+  EXPECT_GT(beside_fluid, 0u);
+}
+
+TEST(WallState, AcceleratingWallsFeelGravityMinusTheirAcceleration) {
+  check_wall_state_accelerating<2>(16);
+  check_wall_state_accelerating<3>(10);
 }
 
 template <int D>

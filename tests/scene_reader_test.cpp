@@ -314,6 +314,86 @@ TEST(SceneReader, ReadsAnObstaclesOwnSlip) {
   expect_refused(with(full_2d_scene(), "/walls/obstacles/0/slip", "sticky"), "/walls/obstacles/0/slip", "no_slip");
 }
 
+TEST(SceneReader, ReadsAnObstaclesMotion) {
+  const json rotation = {{"rotation", {{"centre", {0.85, 0.05}}, {"angular_velocity", 2.5}, {"ramp_time", 0.5}}}};
+  scene::Scene s = parse(with(full_2d_scene(), "/walls/obstacles/0/motion", rotation));
+  ASSERT_TRUE(s.walls.obstacles[0].motion.has_value());
+  const auto& turning = std::get<scene::Rotation>(*s.walls.obstacles[0].motion);
+  EXPECT_EQ(turning.centre, vec(0.85, 0.05));
+  EXPECT_EQ(turning.axis, vec(0, 0, 1));
+  EXPECT_EQ(turning.angular_velocity, 2.5);
+  EXPECT_EQ(turning.ramp_time, 0.5);
+  EXPECT_FALSE(s.walls.obstacles[1].motion.has_value());
+
+  const json piston = {{"oscillation", {{"amplitude", {0.02, 0}}, {"frequency", 1.5}, {"phase", -1.5}}}};
+  s = parse(with(full_2d_scene(), "/walls/obstacles/1/motion", piston));
+  const auto& oscillation = std::get<scene::Oscillation>(*s.walls.obstacles[1].motion);
+  EXPECT_EQ(oscillation.amplitude, vec(0.02, 0));
+  EXPECT_EQ(oscillation.frequency, 1.5);
+  EXPECT_EQ(oscillation.phase, -1.5);
+
+  const json flap = {{"flap", {{"hinge", {0.8, 0}}, {"amplitude", 0.1}, {"frequency", 0.5}}}};
+  s = parse(with(full_2d_scene(), "/walls/obstacles/0/motion", flap));
+  EXPECT_EQ(std::get<scene::FlapOscillation>(*s.walls.obstacles[0].motion).hinge, vec(0.8, 0));
+}
+
+TEST(SceneReader, RefusesBadMotions) {
+  const json document = full_2d_scene();
+  const json turning = {{"centre", {0.85, 0.05}}, {"angular_velocity", 1}};
+  expect_refused(with(document, "/walls/obstacles/0/motion", {{"rotation", turning}, {"flap", turning}}),
+                 "/walls/obstacles/0/motion", "exactly one motion key");
+  expect_refused(with(document, "/walls/obstacles/0/motion", {{"spin", turning}}), "/walls/obstacles/0/motion/spin",
+                 "one of the keys");
+  json axis = turning;
+  axis["axis"] = {0, 1};
+  expect_refused(with(document, "/walls/obstacles/0/motion", {{"rotation", axis}}),
+                 "/walls/obstacles/0/motion/rotation/axis", "2D scenes rotate about z");
+  expect_refused(
+      with(document, "/walls/obstacles/0/motion", {{"oscillation", {{"amplitude", {0.1, 0}}, {"frequency", 0}}}}),
+      "/walls/obstacles/0/motion/oscillation/frequency", "a number > 0");
+  expect_refused(
+      with(with(document, "/walls/obstacles/0/velocity", {1, 0}), "/walls/obstacles/0/motion", {{"rotation", turning}}),
+      "/walls/obstacles/0/motion", "no motion on an obstacle with a velocity");
+  expect_refused(with(document, "/walls/obstacles/2/motion", {{"rotation", turning}}), "/walls/obstacles/2/motion",
+                 "no motion on a plane");
+}
+
+// A motion table is read from its CSV file; a bad row is refused with the file and its line.
+TEST(SceneReader, ReadsAMotionTableAndRefusesABadOne) {
+  const std::filesystem::path directory = std::filesystem::temp_directory_path() / "tide_motion_table_test";
+  std::filesystem::create_directories(directory);
+  const auto table_scene = [&](const std::string& name, const std::string& text) {
+    std::ofstream(directory / name) << text;
+    return with(full_2d_scene(), "/walls/obstacles/0/motion",
+                {{"table", {{"file", (directory / name).string()}, {"centre", {0.85, 0.05}}}}});
+  };
+  const scene::Scene s = parse(table_scene("good.csv", "time,x,y,angle\n0,0,0,0\n0.5,0.01,0,0.1\n1.5,0.01,0.02,0\n"));
+  const auto& table = std::get<scene::MotionTable>(*s.walls.obstacles[0].motion);
+  ASSERT_EQ(table.samples.size(), 3u);
+  EXPECT_EQ(table.samples[1].time, 0.5);
+  EXPECT_EQ(table.samples[1].displacement, vec(0.01, 0));
+  EXPECT_EQ(table.samples[1].angle, 0.1);
+  EXPECT_EQ(table.samples[2].displacement, vec(0.01, 0.02));
+
+  const std::string at = "/walls/obstacles/0/motion/table/file";
+  expect_refused(table_scene("columns.csv", "time,x,y,angle\n0,0,0,0\n1,2,3\n"), at, "a motion table");
+  const SceneError columns = error_of(table_scene("columns.csv", "t,x,y,a\n0,0,0,0\n1,2,3\n").dump());
+  EXPECT_NE(std::string(columns.what()).find("columns.csv: line 3: expected 4 numbers"), std::string::npos)
+      << columns.what();
+  const SceneError order = error_of(table_scene("order.csv", "t,x,y,a\n0,0,0,0\n1,0,0,0\n1,0,0,0\n").dump());
+  EXPECT_NE(std::string(order.what()).find("line 4: expected a time after 1"), std::string::npos) << order.what();
+  const SceneError start = error_of(table_scene("start.csv", "t,x,y,a\n0,0.1,0,0\n1,0,0,0\n").dump());
+  EXPECT_NE(std::string(start.what()).find("line 2: expected the first row at time 0"), std::string::npos)
+      << start.what();
+  const SceneError number = error_of(table_scene("nan.csv", "t,x,y,a\n0,0,0,0\n1,nan,0,0\n").dump());
+  EXPECT_NE(std::string(number.what()).find("line 3: expected a finite number, got \"nan\""), std::string::npos)
+      << number.what();
+  expect_refused(
+      with(full_2d_scene(), "/walls/obstacles/0/motion", {{"table", {{"file", (directory / "absent.csv").string()}}}}),
+      at, "a motion table");
+  std::filesystem::remove_all(directory);
+}
+
 TEST(SceneReader, ReadsTheIncompressibleSchemesAndTheirSolverKeys) {
   for (const auto& [name, scheme] :
        {std::pair{"dfsph", scene::Scheme::dfsph}, std::pair{"iisph", scene::Scheme::iisph}}) {

@@ -49,33 +49,36 @@ struct WallStateOutput {
 
 }  // namespace detail
 
-/// Adami, Hu & Adams 2012, eq. 27 for a wall that does not accelerate: p_w = (Σ_f p_f W_wf +
-/// g·Σ_f ρ_f x_wf W_wf) / Σ_f W_wf, and ρ_w from the equation of state (eq. 28). The velocity a
-/// no-slip wall shows the fluid mirrors the Shepard-averaged fluid velocity about the wall's
-/// own velocity v_s, v_w = 2 v_s − Σ_f v_f W_wf / Σ_f W_wf (eq. 22–23). Walls with no fluid
-/// neighbour get p = 0 (plus the background pressure), ρ = ρ0, v = v_s. The fluid's pressure
-/// clamp applies to walls too: a wall particle beside the free surface can extrapolate to p < 0.
-/// Without `pressure_rule`, the velocity only (p and ρ of the walls are left as they are); the
-/// velocity only where the walls have that field (no-slip walls). For one wall contact.
+/// Adami, Hu & Adams 2012, eq. 27: p_w = (Σ_f p_f W_wf + (g − a_w)·Σ_f ρ_f x_wf W_wf) / Σ_f W_wf,
+/// with a_w the wall's acceleration where it has a prescribed motion (zero otherwise), and ρ_w
+/// from the equation of state (eq. 28). The velocity a no-slip wall shows the fluid mirrors the
+/// Shepard-averaged fluid velocity about the wall's own velocity v_s,
+/// v_w = 2 v_s − Σ_f v_f W_wf / Σ_f W_wf (eq. 22–23). Walls with no fluid neighbour get p = 0
+/// (plus the background pressure), ρ = ρ0, v = v_s. The fluid's pressure clamp applies to walls
+/// too: a wall particle beside the free surface can extrapolate to p < 0. Without
+/// `pressure_rule`, the velocity only (p and ρ of the walls are left as they are); the velocity
+/// only where the walls have that field (no-slip walls). For one wall contact.
 template <int D, class Kernel>
-void wall_state(const Kernel& kernel, Contact<D>& walls, const ParticleSet<D>& fluid, const FluidFields<D>& f,
+void wall_state(const Kernel& kernel, Contact<D>& contact, const ParticleSet<D>& fluid, const FluidFields<D>& f,
                 const WallPressureExtrapolation<D>* pressure_rule) {
-  const WallFields<D>& w = walls.fields();
-  ParticleSet<D>& wall_set = walls.particles();
+  const WallFields<D>& w = contact.fields();
+  ParticleSet<D>& particles = contact.particles();
   const auto x = fluid[f.position];
   const auto v = fluid[f.velocity];
   const auto density = fluid[f.density];
   const auto pressure = fluid[f.pressure];
   const ConstVectorView<D> surface_velocity =
-      w.surface_velocity ? std::as_const(wall_set)[*w.surface_velocity] : ConstVectorView<D>{};
+      w.surface_velocity ? std::as_const(particles)[*w.surface_velocity] : ConstVectorView<D>{};
+  const ConstVectorView<D> acceleration =
+      w.acceleration ? std::as_const(particles)[*w.acceleration] : ConstVectorView<D>{};
   const EquationOfState* eos = pressure_rule ? pressure_rule->eos : nullptr;
   // Compiled with and without the velocity, chosen once: free-slip walls neither sum nor store it.
   const auto run = [&]<bool WithVelocity>() {
     const detail::WallStateOutput<D, WithVelocity> output{
         // Free-slip walls have no velocity field: no pass reads a wall velocity there.
-        w.velocity ? wall_set[*w.velocity] : VectorView<D>{}, wall_set[w.pressure],
-        eos ? wall_set[w.density] : std::span<Real>{}, pressure_rule != nullptr};
-    for_each_contact_particle<D>(walls, x, output, [&](std::size_t b, const auto& fluid_pairs) {
+        w.velocity ? particles[*w.velocity] : VectorView<D>{}, particles[w.pressure],
+        eos ? particles[w.density] : std::span<Real>{}, pressure_rule != nullptr};
+    for_each_contact_particle<D>(contact, x, output, [&](std::size_t b, const auto& fluid_pairs) {
       detail::WallState<D> state;
       const Vector<D> own_velocity = w.surface_velocity ? surface_velocity[b] : Vector<D>::Zero();
       Real weight_sum = 0;
@@ -93,7 +96,10 @@ void wall_state(const Kernel& kernel, Contact<D>& walls, const ParticleSet<D>& f
         state.velocity = weight_sum > 0 ? Vector<D>(2 * own_velocity - velocity_sum / weight_sum) : own_velocity;
       if (!pressure_rule) return state;
       if (weight_sum > 0) {
-        const Real extrapolated = (pressure_sum + pressure_rule->gravity.dot(hydrostatic_sum)) / weight_sum;
+        // A wall that accelerates at a_w feels g − a_w (eq. 27).
+        const Vector<D> felt =
+            w.acceleration ? Vector<D>(pressure_rule->gravity - acceleration[b]) : pressure_rule->gravity;
+        const Real extrapolated = (pressure_sum + felt.dot(hydrostatic_sum)) / weight_sum;
         state.pressure = pressure_rule->clamp_negative_pressure ? std::max(extrapolated, Real(0)) : extrapolated;
         if (eos) state.density = eos->density(state.pressure);
       } else {

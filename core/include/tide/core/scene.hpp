@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
+#include "tide/core/scene_motion.hpp"
 
 namespace tide::scene {
 
@@ -78,13 +79,15 @@ struct Container {
   bool open_top = true;
 };
 
-/// A solid obstacle. `velocity` is the velocity of its surface for the no-slip condition; its
-/// particles stay in place, so it models a wall sliding in its own plane (a Couette plate, the
-/// lid of a cavity).
+/// A solid obstacle. Without `motion` its particles stay in place and `velocity` is the velocity
+/// of its surface for the no-slip condition (a wall sliding in its own plane: a Couette plate,
+/// the lid of a cavity). With `motion` the obstacle moves as a rigid body (scene_motion.hpp) and
+/// its surface has the velocity of that motion.
 struct Obstacle {
   std::variant<Box, Ball, Plane> shape;
   Vec velocity{};
   std::optional<WallSlip> slip;  // unset: the walls' slip (Walls::slip)
+  std::optional<Motion> motion;
 };
 
 /// Wall layers a kernel needs so that a fluid particle touching a wall has wall particles across

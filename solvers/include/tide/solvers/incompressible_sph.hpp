@@ -10,6 +10,7 @@
 #include "tide/core/scene.hpp"
 #include "tide/solvers/incompressible_scheme.hpp"
 #include "tide/solvers/interactions.hpp"
+#include "tide/solvers/moving_walls.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/phases.hpp"
 #include "tide/solvers/pipeline.hpp"
@@ -114,6 +115,7 @@ class IncompressibleSph final : public Simulation<D> {
   // so (passes::NeighborMasses). Set with the gradient cache, after every neighbour update.
   bool uniform_masses_ = false;
   Interactions<D> interactions_;
+  MovingWalls<D> moving_walls_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   Real max_speed_ = 0;

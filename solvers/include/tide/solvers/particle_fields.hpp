@@ -32,6 +32,7 @@ struct WallFields {
   ScalarField density;
   ScalarField pressure;
   std::optional<VectorField> surface_velocity;  // the wall's own velocity; only when some wall moves
+  std::optional<VectorField> acceleration;      // only walls with a prescribed motion (MovingWalls)
 };
 
 }  // namespace tide

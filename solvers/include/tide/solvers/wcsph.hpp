@@ -13,6 +13,7 @@
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/equation_of_state.hpp"
 #include "tide/solvers/interactions.hpp"
+#include "tide/solvers/moving_walls.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/phases.hpp"
 #include "tide/solvers/pipeline.hpp"
@@ -121,6 +122,7 @@ class Wcsph final : public Simulation<D> {
   ParticleSet<D> fluid_;
   FluidFields<D> fluid_fields_;
   Interactions<D> interactions_;
+  MovingWalls<D> moving_walls_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   TimeStep last_time_step_;

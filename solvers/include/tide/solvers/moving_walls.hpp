@@ -1,0 +1,90 @@
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tide/core/parallel.hpp"
+#include "tide/core/particle_set.hpp"
+#include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/solvers/contact.hpp"
+#include "tide/solvers/instability.hpp"
+#include "tide/solvers/rigid_motion.hpp"
+
+namespace tide {
+
+/// The wall contacts whose particles follow a prescribed rigid motion (scene::Motion): a stage
+/// of the step puts them where the motion has them at the step's end, with the velocity the
+/// no-slip mirror and the continuity equation read (WallFields::surface_velocity) and the
+/// acceleration of Adami, Hu & Adams 2012, eq. 27 (WallFields::acceleration). Each particle is
+/// placed from its start position, so the poses do not drift however many steps are taken.
+template <int D>
+class MovingWalls {
+ public:
+  explicit MovingWalls(const GridDomain<D>& domain) : domain_(domain) {}
+
+  /// Moves `contact` (a moving contact whose fields have a surface velocity and an acceleration)
+  /// by `motion`; `start` holds each particle's position at τ = 0.
+  void add(Contact<D>& contact, scene::Motion motion, VectorField start) {
+    walls_.push_back({&contact, std::move(motion), start});
+  }
+
+  bool empty() const { return walls_.empty(); }
+
+  /// Puts every moving wall where its motion has it at τ (the time since the start), wrapped
+  /// into the domain on its periodic axes. Throws InstabilityError naming the contact when the
+  /// motion carries a particle out of the domain on a non-periodic axis (the neighbour search
+  /// would drop it).
+  void move_to(double tau, std::uint64_t step, double time) {
+    for (const Wall& wall : walls_) move(wall, pose_at(wall.motion, tau), step, time);
+  }
+
+ private:
+  struct Wall {
+    Contact<D>* contact;
+    scene::Motion motion;
+    VectorField start;
+  };
+
+  void move(const Wall& wall, const RigidPose& pose, std::uint64_t step, double time) const {
+    ParticleSet<D>& set = wall.contact->particles();
+    const WallFields<D>& w = wall.contact->fields();
+    const auto start = std::as_const(set)[wall.start];
+    auto x = set[w.position];
+    auto v = set[*w.surface_velocity];
+    auto a = set[*w.acceleration];
+    for_each_particle(set.size(), [&](std::size_t b) {
+      Eigen::Vector3d x0 = Eigen::Vector3d::Zero();
+      for (int d = 0; d < D; ++d) x0[d] = static_cast<double>(start.component[d][b]);
+      const RigidPose::Point p = pose.point(x0);
+      for (int d = 0; d < D; ++d) {
+        Real coordinate = static_cast<Real>(p.position[d]);
+        if (domain_.periodic[d]) {  // into [lower, upper), as the neighbour grid keeps its particles
+          const Real length = domain_.upper[d] - domain_.lower[d];
+          coordinate -= length * std::floor((coordinate - domain_.lower[d]) / length);
+        }
+        x.component[d][b] = coordinate;
+        v.component[d][b] = static_cast<Real>(p.velocity[d]);
+        a.component[d][b] = static_cast<Real>(p.acceleration[d]);
+      }
+    });
+    const auto id = std::as_const(set)[set.id()];
+    for (std::size_t b = 0; b < set.size(); ++b) {
+      for (int d = 0; d < D; ++d) {
+        if (domain_.periodic[d]) continue;
+        const Real coordinate = x.component[d][b];
+        if (coordinate >= domain_.lower[d] && coordinate < domain_.upper[d]) continue;
+        throw InstabilityError(
+            id[b], "position", static_cast<double>(coordinate), step, time,
+            "its prescribed motion carries a particle of \"" + wall.contact->name() + "\" out of the domain",
+            "Enlarge domain.box or change the obstacle's motion.");
+      }
+    }
+  }
+
+  GridDomain<D> domain_;
+  std::vector<Wall> walls_;
+};
+
+}  // namespace tide
