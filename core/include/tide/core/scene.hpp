@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
+#include "tide/core/triangle_mesh.hpp"
 
 namespace tide::scene {
 
@@ -35,6 +37,21 @@ struct Ball {
 struct Plane {
   Vec point{};
   Vec normal{};
+};
+
+/// A closed triangle mesh read from a file (docs/bodies.md, "Meshes"). Its vertices are placed in
+/// the scene as scale × units, then rotated by `degrees` about `axis` (through the origin of the
+/// file's coordinates), then translated. `surface` holds the repaired and placed triangles in
+/// metres; the scene reader fills it, once, when it reads the scene.
+struct Mesh {
+  std::string file;    // as written in the scene, relative to the scene's directory
+  double scale = 1;    // –
+  double units = 1;    // metres per file unit: 1 (m), 0.01 (cm), 0.001 (mm)
+  Vec axis{0, 0, 1};   // rotation axis
+  double degrees = 0;  // rotation angle, counter-clockwise about `axis`
+  Vec translation{};   // m
+  std::shared_ptr<const TriangleMesh> surface;
+  Box bounds;  // of `surface`
 };
 
 /// A fluid's material. The artificial speed of sound is either given (`sound_speed`) or set to
@@ -82,7 +99,7 @@ struct Container {
 /// particles stay in place, so it models a wall sliding in its own plane (a Couette plate, the
 /// lid of a cavity).
 struct Obstacle {
-  std::variant<Box, Ball, Plane> shape;
+  std::variant<Box, Ball, Plane, Mesh> shape;
   Vec velocity{};
   std::optional<WallSlip> slip;  // unset: the walls' slip (Walls::slip)
 };
