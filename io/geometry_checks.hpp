@@ -15,6 +15,9 @@ inline double coordinate_slack(const scene::Scene& scene) { return 1e-9 * scene.
 /// The container with its wall layers lies inside the domain (up to the rim, for an open top).
 void check_container_in_domain(const scene::Scene& scene);
 
+/// Every mesh obstacle's bounding box lies inside the domain.
+void check_mesh_placement(const scene::Scene& scene);
+
 /// Every fluid block lies inside the domain and inside the container's inner box.
 void check_fluid_placement(const scene::Scene& scene);
 

@@ -62,6 +62,7 @@ scene::Box bounds_of(const scene::Ball& ball) {
 scene::Box bounds_of(const scene::Obstacle& obstacle, const scene::Box& domain) {
   if (const auto* box = std::get_if<scene::Box>(&obstacle.shape)) return *box;
   if (const auto* ball = std::get_if<scene::Ball>(&obstacle.shape)) return bounds_of(*ball);
+  if (const auto* mesh = std::get_if<scene::Mesh>(&obstacle.shape)) return mesh->bounds;
   return domain;
 }
 
@@ -142,6 +143,7 @@ void check_particle_count(const scene::Scene& scene) {
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
     const char* shape = std::holds_alternative<scene::Box>(obstacles[k].shape)    ? "/box"
                         : std::holds_alternative<scene::Ball>(obstacles[k].shape) ? "/ball"
+                        : std::holds_alternative<scene::Mesh>(obstacles[k].shape) ? "/mesh"
                                                                                   : "/plane";
     count.add(bounds_of(obstacles[k], scene.domain.box), "/walls/obstacles/" + std::to_string(k) + shape);
   }

@@ -13,6 +13,8 @@ std::vector<SectionDoc> section_docs() {
       section_doc("box", box_keys()),
       section_doc("ball", ball_keys()),
       section_doc("plane", plane_keys()),
+      section_doc("mesh", mesh_keys()),
+      section_doc("mesh.rotation", mesh_rotation_keys()),
       section_doc("walls", wall_keys()),
       section_doc("walls.container", container_keys()),
       section_doc("walls.obstacles[i]", obstacle_keys()),

@@ -83,6 +83,8 @@ std::span<const Key<scene::RigidRotation>> rotation_keys();
 std::span<const Key<scene::Box>> box_keys();
 std::span<const Key<scene::Ball>> ball_keys();
 std::span<const Key<scene::Plane>> plane_keys();
+std::span<const Key<scene::Mesh>> mesh_keys();
+std::span<const Key<scene::Mesh>> mesh_rotation_keys();
 std::span<const Key<scene::Walls>> wall_keys();
 std::span<const Key<scene::Container>> container_keys();
 std::span<const Key<scene::Obstacle>> obstacle_keys();

@@ -25,14 +25,16 @@ void read_layers(const ValueReader& values, const Node& value, scene::Walls& wal
 scene::Obstacle read_obstacle(const ValueReader& values, const Node& node) {
   scene::Obstacle obstacle;
   read_section(values, node, obstacle_keys(), obstacle);
-  const std::string_view shape = shape_key(values, node, {"box", "ball", "plane"});
+  const std::string_view shape = shape_key(values, node, {"box", "ball", "plane", "mesh"});
   if (shape == "box") {
     obstacle.shape = read_box(values, child(node, shape));
   } else if (shape == "ball") {
     obstacle.shape = read_ball(values, child(node, shape));
-  } else {
+  } else if (shape == "plane") {
     obstacle.shape = read_plane(values, child(node, shape));
     if (obstacle.motion) values.fail(child(node, "motion"), "no motion on a plane (a half-space cannot move)");
+  } else {
+    obstacle.shape = read_mesh(values, child(node, shape));
   }
   return obstacle;
 }
@@ -54,8 +56,8 @@ std::span<const Key<scene::Walls>> wall_keys() {
          read_section(values, value, container_keys(), *walls.container);
        }},
       {"obstacles", "array of objects", "–", "`[]`",
-       "Solid shapes inside the domain, each `{\"box\": ...}`, `{\"ball\": ...}` or `{\"plane\": ...}` (exactly "
-       "one shape key), with an optional `\"velocity\"`, `\"slip\"` and `\"motion\"`.",
+       "Solid shapes inside the domain, each `{\"box\": ...}`, `{\"ball\": ...}`, `{\"plane\": ...}` or "
+       "`{\"mesh\": ...}` (exactly one shape key), with an optional `\"velocity\"`, `\"slip\"` and `\"motion\"`.",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Walls& walls) {
          for (const Node& entry : values.elements(value, 0, "an array of obstacles"))
@@ -85,11 +87,12 @@ std::span<const Key<scene::Container>> container_keys() {
 }
 
 std::span<const Key<scene::Obstacle>> obstacle_keys() {
-  static constexpr std::array<Key<scene::Obstacle>, 6> keys{{
+  static constexpr std::array<Key<scene::Obstacle>, 7> keys{{
       // Exactly one shape key (read_obstacle).
       {"box", "[box](#box)", "–", "–", "A solid box."},
       {"ball", "[ball](#ball)", "–", "–", "A solid ball (a disc in 2D)."},
       {"plane", "[plane](#plane)", "–", "–", "A solid half-space."},
+      {"mesh", "[mesh](#mesh)", "–", "–", "A solid closed triangle mesh from a file (docs/bodies.md)."},
       {"velocity", "vector", "m/s", "zero",
        "The velocity of the obstacle's surface in the no-slip condition; its particles stay in place.",
        Presence::optional,

@@ -21,6 +21,7 @@ scene::Scene parse_scene(std::string_view json_text, std::string source_name) {
   const ValueReader values(std::move(source_name), scene);
   read_section(values, Node{&document, ""}, top_level_keys(), scene);
   check_container_in_domain(scene);
+  check_mesh_placement(scene);
   check_fluid_placement(scene);
   check_fluid_lattice_points(scene);
   check_particle_count(scene);

@@ -1,6 +1,6 @@
 #pragma once
 
-// Reading the shapes of a scene (boxes, balls, planes) and the corners of the boxes that are
+// Reading the shapes of a scene (boxes, balls, planes, meshes) and the corners of the boxes that are
 // sections of their own (the domain, the container).
 
 #include <initializer_list>
@@ -15,6 +15,10 @@ namespace tide::io {
 scene::Box read_box(const ValueReader& values, const Node& node);
 scene::Ball read_ball(const ValueReader& values, const Node& node);
 scene::Plane read_plane(const ValueReader& values, const Node& node);
+
+/// A mesh's keys, then its file (relative to the scene file's directory) read, repaired and
+/// placed: a mesh the scene cannot use fails at the "file" key, naming the mesh file and why.
+scene::Mesh read_mesh(const ValueReader& values, const Node& node);
 
 /// A box's "min" corner, read before its "max".
 void read_min_corner(const ValueReader& values, const Node& node, scene::Box& box);

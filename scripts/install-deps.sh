@@ -7,6 +7,7 @@ packages=(
   build-essential cmake          # compilers, make, CMake >= 3.22
   libeigen3-dev libtbb-dev       # core: small-vector math, the parallel layer (oneTBB)
   libhdf5-dev nlohmann-json3-dev # io: output files, scene files
+  libtinyobjloader-dev           # io: Wavefront OBJ meshes
   libcli11-dev                   # apps: the tide command line
   libgtest-dev libbenchmark-dev  # tests/, bench/
   clang clang-format             # second compiler, formatting

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <variant>
 
+#include "tide/solvers/mesh_depth.hpp"
+
 namespace tide {
 namespace {
 
@@ -55,6 +57,12 @@ Real depth_in_obstacle(const Vector<D>& p, const scene::Obstacle& obstacle) {
   if (const auto* box = std::get_if<scene::Box>(&obstacle.shape)) return depth_in_box<D>(p, *box);
   if (const auto* ball = std::get_if<scene::Ball>(&obstacle.shape))
     return Real(ball->radius) - (p - to_vector<D>(ball->centre)).norm();
+  if (const auto* mesh = std::get_if<scene::Mesh>(&obstacle.shape)) {
+    if constexpr (D == 2)
+      return static_cast<Real>(depth_in_mesh_section(*mesh, double(p[0]), double(p[1])));
+    else
+      return static_cast<Real>(depth_in_mesh(*mesh, {double(p[0]), double(p[1]), double(p[2])}));
+  }
   const auto& plane = std::get<scene::Plane>(obstacle.shape);
   const Vector<D> normal = to_vector<D>(plane.normal).normalized();
   return -(p - to_vector<D>(plane.point)).dot(normal);
@@ -68,6 +76,9 @@ void obstacle_bounds(const scene::Scene& scene, const scene::Obstacle& obstacle,
   } else if (const auto* ball = std::get_if<scene::Ball>(&obstacle.shape)) {
     lower = to_vector<D>(ball->centre) - Vector<D>::Constant(Real(ball->radius));
     upper = to_vector<D>(ball->centre) + Vector<D>::Constant(Real(ball->radius));
+  } else if (const auto* mesh = std::get_if<scene::Mesh>(&obstacle.shape)) {
+    lower = to_vector<D>(mesh->bounds.min);
+    upper = to_vector<D>(mesh->bounds.max);
   } else {
     lower = to_vector<D>(scene.domain.box.min);
     upper = to_vector<D>(scene.domain.box.max);

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -17,6 +18,7 @@
 
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/scene_motion.hpp"
+#include "tide/core/triangle_mesh.hpp"
 
 namespace tide::scene {
 
@@ -36,6 +38,21 @@ struct Ball {
 struct Plane {
   Vec point{};
   Vec normal{};
+};
+
+/// A closed triangle mesh read from a file (docs/bodies.md, "Meshes"). Its vertices are placed in
+/// the scene as scale × units, then rotated by `degrees` about `axis` (through the origin of the
+/// file's coordinates), then translated. `surface` holds the repaired and placed triangles in
+/// metres; the scene reader fills it, once, when it reads the scene.
+struct Mesh {
+  std::string file;    // as written in the scene, relative to the scene's directory
+  double scale = 1;    // –
+  double units = 1;    // metres per file unit: 1 (m), 0.01 (cm), 0.001 (mm)
+  Vec axis{0, 0, 1};   // rotation axis
+  double degrees = 0;  // rotation angle, counter-clockwise about `axis`
+  Vec translation{};   // m
+  std::shared_ptr<const TriangleMesh> surface;
+  Box bounds;  // of `surface`
 };
 
 /// A fluid's material. The artificial speed of sound is either given (`sound_speed`) or set to
@@ -84,7 +101,7 @@ struct Container {
 /// the lid of a cavity). With `motion` the obstacle moves as a rigid body (scene_motion.hpp) and
 /// its surface has the velocity of that motion.
 struct Obstacle {
-  std::variant<Box, Ball, Plane> shape;
+  std::variant<Box, Ball, Plane, Mesh> shape;
   Vec velocity{};
   std::optional<WallSlip> slip;  // unset: the walls' slip (Walls::slip)
   std::optional<Motion> motion;
