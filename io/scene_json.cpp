@@ -1,6 +1,7 @@
 #include "scene_json.hpp"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <utility>
 #include <vector>

@@ -5,7 +5,7 @@
 // paths (RFC 6901) that every scene error names.
 
 #include <cstddef>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <string_view>
 

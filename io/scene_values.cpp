@@ -1,6 +1,7 @@
 #include "scene_values.hpp"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "tide/core/scene_error.hpp"
 
@@ -48,6 +49,16 @@ std::int64_t ValueReader::integer(const Node& node, std::int64_t least, std::int
 
 int ValueReader::count(const Node& node) const {
   return static_cast<int>(integer(node, 1, largest_count, "an integer in [1, " + std::to_string(largest_count) + "]"));
+}
+
+double ValueReader::finite_number(const Node& node, std::string_view expected) const {
+  if (!is_finite_number(node)) fail(node, std::string(expected));
+  return node.value->get<double>();
+}
+
+const std::string& ValueReader::string_at(const Node& node, const std::string& expected) const {
+  if (!node.present() || !node.value->is_string()) fail(node, expected);
+  return node.value->get_ref<const std::string&>();
 }
 
 bool ValueReader::boolean(const Node& node) const {

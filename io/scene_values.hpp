@@ -65,8 +65,9 @@ class ValueReader {
 
   template <class Accepts>
   double number(const Node& node, std::string_view expected, Accepts accepts) const {
-    if (!is_finite_number(node) || !accepts(node.value->get<double>())) fail(node, std::string(expected));
-    return node.value->get<double>();
+    const double value = finite_number(node, expected);
+    if (!accepts(value)) fail(node, std::string(expected));
+    return value;
   }
 
   double number(const Node& node, const NumberRule& rule) const { return number(node, rule.expected, rule.accepts); }
@@ -87,9 +88,9 @@ class ValueReader {
     std::array<std::string_view, N> spellings;
     std::transform(names.begin(), names.end(), spellings.begin(), [](const Named<E>& named) { return named.name; });
     const std::string expected = "one of " + quoted_list(spellings);
-    if (!node.present() || !node.value->is_string()) fail(node, expected);
+    const std::string& given = string_at(node, expected);
     for (const Named<E>& named : names) {
-      if (named.name == node.value->get_ref<const std::string&>()) return named.value;
+      if (named.name == given) return named.value;
     }
     fail(node, expected);
   }
@@ -107,6 +108,10 @@ class ValueReader {
 
  private:
   static bool is_finite_number(const Node& node);
+  // The number at `node`, or a failure expecting `expected` where there is no finite number.
+  double finite_number(const Node& node, std::string_view expected) const;
+  // The string at `node`, or a failure expecting `expected` where there is none.
+  const std::string& string_at(const Node& node, const std::string& expected) const;
 
   std::string file_;
   const scene::Scene& scene_;
