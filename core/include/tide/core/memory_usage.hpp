@@ -30,7 +30,7 @@ struct MemoryItem {
 /// and every buffer is seen (the issue-8 accounting). Items are named "<owner>.<buffer>".
 class MemoryUsage {
  public:
-  void add(std::string name, std::size_t bytes) { items_.push_back({std::move(name), bytes}); }
+  void add(std::string name, std::size_t bytes);
   template <class T>
   void add(std::string name, const std::vector<T>& values) {
     add(std::move(name), held_bytes(values));
@@ -38,11 +38,7 @@ class MemoryUsage {
 
   const std::vector<MemoryItem>& items() const { return items_; }
 
-  std::size_t total() const {
-    std::size_t sum = 0;
-    for (const MemoryItem& item : items_) sum += item.bytes;
-    return sum;
-  }
+  std::size_t total() const;
 
  private:
   std::vector<MemoryItem> items_;

@@ -1,3 +1,9 @@
+#pragma once
+
+// IncompressibleSph's member definitions, instantiated once per dimension (incompressible_sph_2d.cpp,
+// incompressible_sph_3d.cpp): each dimension compiles every pass for the seven kernels, and a file per dimension lets
+// two cores share that work.
+
 #include "tide/solvers/incompressible_sph.hpp"
 
 #include <algorithm>
@@ -518,8 +524,5 @@ double IncompressibleSph<D>::bytes_per_particle() const {
   const double scratch = fluid_.size() > 0 ? double(sizeof(Real) * scratch_entries) / fluid_.size() : 0;
   return setup::bytes_per_particle<D>(fluid_, interactions_) + scratch;
 }
-
-template class IncompressibleSph<2>;
-template class IncompressibleSph<3>;
 
 }  // namespace tide

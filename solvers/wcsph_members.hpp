@@ -1,3 +1,9 @@
+#pragma once
+
+// Wcsph's member definitions, instantiated once per dimension (wcsph_2d.cpp, wcsph_3d.cpp): each
+// dimension compiles every pass for the seven kernels, and a file per dimension lets two cores
+// share that work.
+
 #include "tide/solvers/wcsph.hpp"
 
 #include <array>
@@ -394,8 +400,5 @@ std::string Wcsph<D>::time_step_note() const {
   }
   return note;
 }
-
-template class Wcsph<2>;
-template class Wcsph<3>;
 
 }  // namespace tide

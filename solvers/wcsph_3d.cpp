@@ -1,0 +1,7 @@
+#include "wcsph_members.hpp"
+
+namespace tide {
+
+template class Wcsph<3>;
+
+}  // namespace tide
