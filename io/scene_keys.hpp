@@ -7,6 +7,7 @@
 // the fuzz dictionary (tide/io/scene_key_reference.hpp), so that a new key is one table row.
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -92,6 +93,11 @@ std::span<const Key<scene::Rotation>> rotation_motion_keys();
 std::span<const Key<scene::Oscillation>> oscillation_keys();
 std::span<const Key<scene::FlapOscillation>> flap_keys();
 std::span<const Key<scene::MotionTable>> motion_table_keys();
+std::span<const Key<scene::Body>> body_keys();
+/// A rotation axis: 3D scenes give it (any length but zero; it is normalised), 2D scenes turn
+/// about z and may not (`refusal_in_2d` says so).
+scene::Vec read_rotation_axis(const ValueReader& values, const Node& value, const std::string& refusal_in_2d);
+std::span<const Key<scene::BodyConstraints>> body_constraint_keys();
 std::span<const Key<scene::Domain>> domain_keys();
 std::span<const Key<scene::Inflow>> inflow_keys();
 std::span<const Key<scene::Solver>> solver_keys();

@@ -11,17 +11,19 @@
 namespace tide::io {
 namespace {
 
-// A rotation axis: 3D scenes give it (any length but zero; it is normalised), 2D scenes turn
-// about z and may not.
 void read_axis(const ValueReader& values, const Node& value, scene::Vec& axis) {
-  if (values.dimension() == 2) values.fail(value, "no axis in a 2D scene (2D scenes rotate about z)");
-  const scene::Vec given = values.vector(value);
-  const double length = std::hypot(given[0], given[1], given[2]);
-  if (!(length > 0) || !std::isfinite(length)) values.fail(value, "a non-zero vector");
-  axis = {given[0] / length, given[1] / length, given[2] / length};
+  axis = read_rotation_axis(values, value, "no axis in a 2D scene (2D scenes rotate about z)");
 }
 
 }  // namespace
+
+scene::Vec read_rotation_axis(const ValueReader& values, const Node& value, const std::string& refusal_in_2d) {
+  if (values.dimension() == 2) values.fail(value, refusal_in_2d);
+  const scene::Vec given = values.vector(value);
+  const double length = std::hypot(given[0], given[1], given[2]);
+  if (!(length > 0) || !std::isfinite(length)) values.fail(value, "a non-zero vector");
+  return {given[0] / length, given[1] / length, given[2] / length};
+}
 
 std::span<const Key<scene::Rotation>> rotation_motion_keys() {
   static constexpr std::array<Key<scene::Rotation>, 4> keys{{

@@ -33,8 +33,18 @@ scene::Obstacle read_obstacle(const ValueReader& values, const Node& node) {
   } else if (shape == "plane") {
     obstacle.shape = read_plane(values, child(node, shape));
     if (obstacle.motion) values.fail(child(node, "motion"), "no motion on a plane (a half-space cannot move)");
+    if (obstacle.body) values.fail(child(node, "body"), "no body on a plane (a half-space has no finite mass)");
   } else {
     obstacle.shape = read_mesh(values, child(node, shape));
+  }
+  if (obstacle.body) {
+    const Node body = child(node, "body");
+    if (obstacle.motion) values.fail(body, "no body on an obstacle with a motion (the fluid moves a body)");
+    if (obstacle.velocity != scene::Vec{})
+      values.fail(body, "no body on an obstacle with a velocity (a body's surface moves with the body)");
+    const scene::BodyConstraints& constraints = obstacle.body->constraints;
+    if (constraints.locked_rotation && constraints.rotation_axis)
+      values.fail(child(body, "constraints"), "locked_rotation or rotation_axis, not both");
   }
   return obstacle;
 }
@@ -57,7 +67,8 @@ std::span<const Key<scene::Walls>> wall_keys() {
        }},
       {"obstacles", "array of objects", "–", "`[]`",
        "Solid shapes inside the domain, each `{\"box\": ...}`, `{\"ball\": ...}`, `{\"plane\": ...}` or "
-       "`{\"mesh\": ...}` (exactly one shape key), with an optional `\"velocity\"`, `\"slip\"` and `\"motion\"`.",
+       "`{\"mesh\": ...}` (exactly one shape key), with an optional `\"velocity\"`, `\"slip\"`, `\"motion\"` and "
+       "`\"body\"`.",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Walls& walls) {
          for (const Node& entry : values.elements(value, 0, "an array of obstacles"))
@@ -87,7 +98,7 @@ std::span<const Key<scene::Container>> container_keys() {
 }
 
 std::span<const Key<scene::Obstacle>> obstacle_keys() {
-  static constexpr std::array<Key<scene::Obstacle>, 7> keys{{
+  static constexpr std::array<Key<scene::Obstacle>, 8> keys{{
       // Exactly one shape key (read_obstacle).
       {"box", "[box](#box)", "–", "–", "A solid box."},
       {"ball", "[ball](#ball)", "–", "–", "A solid ball (a disc in 2D)."},
@@ -114,6 +125,14 @@ std::span<const Key<scene::Obstacle>> obstacle_keys() {
          if (obstacle.velocity != scene::Vec{})
            values.fail(value, "no motion on an obstacle with a velocity (the motion gives its surface velocity)");
          obstacle.motion = read_motion(values, value);
+       }},
+      {"body", "object: `density`, `constraints`", "–", "none",
+       "A rigid body moved by the fluid's forces and gravity (docs/bodies.md): a box, ball or mesh. Not with "
+       "`velocity` or `motion`.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Obstacle& obstacle) {
+         obstacle.body.emplace();
+         read_section(values, value, body_keys(), *obstacle.body);
        }},
   }};
   return keys;

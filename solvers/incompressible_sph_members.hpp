@@ -108,7 +108,7 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   solve_fields_ = {fluid_.add_scalar("pressure_factor"), fluid_.add_vector("predicted_velocity"),
                    fluid_.add_scalar("density_excess"), std::nullopt};
   if (scheme_.divergence_solve) solve_fields_.divergence_pressure = fluid_.add_scalar("divergence_pressure");
-  setup::add_wall_contacts<D>(scene, particle_mass, rest_density_, interactions_, moving_walls_);
+  setup::add_wall_contacts<D>(scene, particle_mass, rest_density_, interactions_, moving_walls_, nullptr);
   // The first solve starts from the pressure of the fluid at rest: a Jacobi sweep carries
   // information about one kernel support, so from zero a deep column would need of the order of
   // (depth / h)² sweeps to take its own weight.

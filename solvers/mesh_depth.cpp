@@ -64,8 +64,17 @@ Point2 crossing(const scene::TriangleMesh& mesh, std::uint32_t a, std::uint32_t 
   return {p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y())};
 }
 
-// The segment the triangle cuts from z = 0 (a vertex at z = 0 counts as above the plane).
-std::optional<std::array<Point2, 2>> section(const scene::TriangleMesh& mesh, const std::array<std::uint32_t, 3>& t) {
+double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
+  const Point2 ab = b - a;
+  if (ab.squaredNorm() == 0) return (a - p).norm();
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (a + t * ab - p).norm();
+}
+
+}  // namespace
+
+std::optional<std::array<Eigen::Vector2d, 2>> triangle_section(const scene::TriangleMesh& mesh,
+                                                               const std::array<std::uint32_t, 3>& t) {
   std::array<Point2, 2> ends;
   int found = 0;
   for (int e = 0; e < 3; ++e) {
@@ -75,15 +84,6 @@ std::optional<std::array<Point2, 2>> section(const scene::TriangleMesh& mesh, co
   if (found != 2) return std::nullopt;
   return ends;
 }
-
-double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 ab = b - a;
-  if (ab.squaredNorm() == 0) return (a - p).norm();
-  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (a + t * ab - p).norm();
-}
-
-}  // namespace
 
 double depth_in_mesh(const scene::Mesh& mesh, const std::array<double, 3>& p) {
   if (!within(mesh.bounds, p.data(), 3)) return outside;
@@ -109,7 +109,7 @@ double depth_in_mesh_section(const scene::Mesh& mesh, double x, double y) {
   bool inside = false;
   double nearest = std::numeric_limits<double>::infinity();
   for (const auto& t : mesh.surface->triangles) {
-    const auto segment = section(*mesh.surface, t);
+    const auto segment = triangle_section(*mesh.surface, t);
     if (!segment) continue;
     const Point2& a = (*segment)[0];
     const Point2& b = (*segment)[1];

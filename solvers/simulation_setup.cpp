@@ -9,10 +9,12 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "tide/core/parallel.hpp"
+#include "tide/solvers/mass_properties.hpp"
 #include "tide/solvers/particle_sampling.hpp"
 
 namespace tide::setup {
@@ -61,7 +63,7 @@ ParticleSamples<D> fixed_walls_with_slip(const scene::Scene& scene, const Partic
                                          scene::WallSlip slip) {
   return walls_made_by<D>(scene, walls, [&](const scene::Obstacle* obstacle) {
     if (!obstacle) return scene.walls.slip == slip;
-    return !obstacle->motion && obstacle->slip.value_or(scene.walls.slip) == slip;
+    return !obstacle->motion && !obstacle->body && obstacle->slip.value_or(scene.walls.slip) == slip;
   });
 }
 
@@ -91,23 +93,64 @@ void add_wall_contact(std::string name, const ParticleSamples<D>& samples, scene
   interactions.add_contact(std::move(name), ContactRole::wall, ContactMotion::fixed, std::move(walls), fields);
 }
 
-// Obstacle `k`, which has a prescribed motion: a moving contact of its own, named by its key path.
+// A moving contact of its own for obstacle `k` (a prescribed motion or a body), named by its key
+// path, with a surface velocity, an acceleration and each particle's start position; none when
+// the obstacle has no particles.
 template <int D>
-void add_moving_obstacle(const scene::Scene& scene, std::size_t k, const ParticleSamples<D>& samples, Real mass,
-                         Real rest_density, Interactions<D>& interactions, MovingWalls<D>& moving) {
+struct MovingObstacle {
+  Contact<D>* contact = nullptr;
+  VectorField start;
+};
+
+template <int D>
+MovingObstacle<D> add_moving_contact(const scene::Scene& scene, std::size_t k, const ParticleSamples<D>& samples,
+                                     Real mass, Real rest_density, Interactions<D>& interactions,
+                                     const std::vector<std::string>& extra_vectors = {}) {
   const scene::Obstacle& obstacle = scene.walls.obstacles[k];
   const ParticleSamples<D> own =
       walls_made_by<D>(scene, samples, [&](const scene::Obstacle* maker) { return maker == &obstacle; });
-  if (own.size() == 0) return;
+  if (own.size() == 0) return {};
   ParticleSet<D> walls = make_particles<D>(own, mass, "surface_velocity");
   WallFields<D> fields = add_wall_fields<D>(walls, obstacle.slip.value_or(scene.walls.slip), rest_density);
   fields.surface_velocity = walls.vector("surface_velocity");
   fields.acceleration = walls.add_vector("acceleration");
   const VectorField start = walls.add_vector("start_position");
   for (std::size_t b = 0; b < walls.size(); ++b) walls[start].set(b, own.positions[b]);
+  for (const std::string& name : extra_vectors) walls.add_vector(name);
   Contact<D>& contact = interactions.add_contact("walls.obstacles[" + std::to_string(k) + "]", ContactRole::wall,
                                                  ContactMotion::moving, std::move(walls), fields);
-  moving.add(contact, *obstacle.motion, start);
+  return {&contact, start};
+}
+
+// Obstacle `k`, which has a prescribed motion.
+template <int D>
+void add_moving_obstacle(const scene::Scene& scene, std::size_t k, const ParticleSamples<D>& samples, Real mass,
+                         Real rest_density, Interactions<D>& interactions, MovingWalls<D>& moving) {
+  const MovingObstacle<D> added = add_moving_contact<D>(scene, k, samples, mass, rest_density, interactions);
+  if (added.contact) moving.add(*added.contact, *scene.walls.obstacles[k].motion, added.start);
+}
+
+// Obstacle `k`, which is a rigid body: its mass properties from its shape and density, and a
+// field for the fluid's force on each of its particles.
+template <int D>
+void add_body(const scene::Scene& scene, std::size_t k, const ParticleSamples<D>& samples, Real mass, Real rest_density,
+              Interactions<D>& interactions, RigidBodies<D>& bodies) {
+  const scene::Obstacle& obstacle = scene.walls.obstacles[k];
+  const MassProperties properties = std::visit(
+      [&](const auto& shape) -> MassProperties {
+        if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, scene::Plane>) {
+          throw std::invalid_argument(scene.source + ": walls.obstacles[" + std::to_string(k) +
+                                      "] is a plane, which cannot be a body");
+        } else {
+          return mass_properties(shape, obstacle.body->density, D);
+        }
+      },
+      obstacle.shape);
+  const MovingObstacle<D> added =
+      add_moving_contact<D>(scene, k, samples, mass, rest_density, interactions, {"fluid_force"});
+  if (!added.contact) return;
+  bodies.add(*added.contact, RigidBody(properties, obstacle.body->constraints, D), added.start,
+             added.contact->particles().vector("fluid_force"));
 }
 
 // Σ_k W(|k| Δx) over the lattice around one particle: the summation density of a particle deep
@@ -237,7 +280,7 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
 
 template <int D>
 void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, Interactions<D>& interactions,
-                       MovingWalls<D>& moving) {
+                       MovingWalls<D>& moving, RigidBodies<D>* bodies) {
   const ParticleSamples<D> samples = sample_walls<D>(scene);
   const scene::WallSlip slip = scene.walls.slip;
   const scene::WallSlip other =
@@ -248,6 +291,10 @@ void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, 
   for (std::size_t k = 0; k < scene.walls.obstacles.size(); ++k) {
     if (scene.walls.obstacles[k].motion)
       add_moving_obstacle<D>(scene, k, samples, mass, rest_density, interactions, moving);
+    if (scene.walls.obstacles[k].body) {
+      if (!bodies) throw std::logic_error("add_wall_contacts: a body in a scheme without bodies");
+      add_body<D>(scene, k, samples, mass, rest_density, interactions, *bodies);
+    }
   }
 }
 
@@ -345,7 +392,7 @@ template GridDomain<2> grid_domain<2>(const scene::Scene&);
 template Real particle_mass<2>(const scene::Scene&, const AnyKernel<2>&, Real);
 template Phases make_phases<2>(const scene::Scene&, const AnyKernel<2>&);
 template ParticleSet<2> make_fluid<2>(const scene::Scene&, Real, Real, FluidFields<2>&, const Phases*);
-template void add_wall_contacts<2>(const scene::Scene&, Real, Real, Interactions<2>&, MovingWalls<2>&);
+template void add_wall_contacts<2>(const scene::Scene&, Real, Real, Interactions<2>&, MovingWalls<2>&, RigidBodies<2>*);
 template void hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, Real, std::span<Real>);
 template void layered_hydrostatic_pressure<2>(const ParticleSet<2>&, const Vector<2>&, Real, std::span<const Real>,
                                               std::span<Real>);
@@ -354,7 +401,7 @@ template GridDomain<3> grid_domain<3>(const scene::Scene&);
 template Real particle_mass<3>(const scene::Scene&, const AnyKernel<3>&, Real);
 template Phases make_phases<3>(const scene::Scene&, const AnyKernel<3>&);
 template ParticleSet<3> make_fluid<3>(const scene::Scene&, Real, Real, FluidFields<3>&, const Phases*);
-template void add_wall_contacts<3>(const scene::Scene&, Real, Real, Interactions<3>&, MovingWalls<3>&);
+template void add_wall_contacts<3>(const scene::Scene&, Real, Real, Interactions<3>&, MovingWalls<3>&, RigidBodies<3>*);
 template void hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, Real, std::span<Real>);
 template void layered_hydrostatic_pressure<3>(const ParticleSet<3>&, const Vector<3>&, Real, std::span<const Real>,
                                               std::span<Real>);

@@ -15,6 +15,7 @@
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/moving_walls.hpp"
 #include "tide/solvers/phases.hpp"
+#include "tide/solvers/rigid_bodies.hpp"
 #include "tide/solvers/wcsph.hpp"
 
 namespace tide::setup {
@@ -53,10 +54,12 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
 /// pressure zero, added to `interactions` as wall contacts: fixed ones, "walls", those of the
 /// scene's walls.slip, and, where obstacles set the other slip, "free-slip walls" or "no-slip
 /// walls" (none where the scene has no wall of that slip); then one moving contact for each
-/// obstacle with a motion, named by its key path ("walls.obstacles[2]") and handed to `moving`.
+/// obstacle with a motion, named by its key path ("walls.obstacles[2]") and handed to `moving`,
+/// and one for each body (walls.obstacles[k].body), handed to `bodies` (null for a scheme without
+/// bodies, where check_capabilities refuses them).
 template <int D>
 void add_wall_contacts(const scene::Scene& scene, Real mass, Real rest_density, Interactions<D>& interactions,
-                       MovingWalls<D>& moving);
+                       MovingWalls<D>& moving, RigidBodies<D>* bodies);
 
 /// The volume of one wall particle, m_b/ρ0 (walls continue the fluid's lattice); 0 without walls.
 template <int D>
@@ -81,6 +84,15 @@ void hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity,
 template <int D>
 void layered_hydrostatic_pressure(const ParticleSet<D>& fluid, const Vector<D>& gravity, Real spacing,
                                   std::span<const Real> rest_densities, std::span<Real> pressure);
+
+/// A vector of the particles' precision as a 3D vector in double (z = 0 in 2D), as the rigid
+/// bodies take forces and gravity.
+template <int D>
+Eigen::Vector3d to_space(const Vector<D>& v) {
+  Eigen::Vector3d space = Eigen::Vector3d::Zero();
+  for (int d = 0; d < D; ++d) space[d] = static_cast<double>(v[d]);
+  return space;
+}
 
 /// Gravity at time t: the scene's, raised smoothly from zero over solver.gravity_ramp_time.
 template <int D>

@@ -16,6 +16,7 @@
 #include <utility>
 #include <variant>
 
+#include "passes/body_force.hpp"
 #include "passes/continuity.hpp"
 #include "passes/density_summation.hpp"
 #include "passes/inflow.hpp"
@@ -45,7 +46,8 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
       kinematic_viscosity_(static_cast<Real>(setup::reference_material(scene).kinematic_viscosity)),
       interactions_(setup::grid_domain<D>(scene), kernel_support_factor(scene.kernel) * smoothing_length_,
                     setup::neighbor_skin(scene, kernel_support_factor(scene.kernel) * smoothing_length_)),
-      moving_walls_(setup::grid_domain<D>(scene)) {
+      moving_walls_(setup::grid_domain<D>(scene)),
+      bodies_(setup::grid_domain<D>(scene)) {
   if (!(eos_.sound_speed() > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   check_capabilities(scene);
@@ -59,7 +61,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
     set_hydrostatic_density();
   }
-  setup::add_wall_contacts<D>(scene, particle_mass, eos_.rest_density(), interactions_, moving_walls_);
+  setup::add_wall_contacts<D>(scene, particle_mass, eos_.rest_density(), interactions_, moving_walls_, &bodies_);
 
   time_step_rule_.smoothing_length = smoothing_length_;
   time_step_rule_.sound_speed = phases_ ? phases_->fastest_sound : eos_.sound_speed();
@@ -73,6 +75,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   time_ = scene.time.start;
 
   if (!moving_walls_.empty()) moving_walls_.move_to(0, step_count_, time_);  // their velocity at the start
+  if (!bodies_.empty()) bodies_.place(step_count_, time_);
   std::vector<Stage> start{neighbor_search_stage()};
   for (Stage& stage : force_stages()) start.push_back(std::move(stage));
   StepContext at_start;  // dt = 0: the forces at the start time
@@ -96,11 +99,18 @@ Pipeline Wcsph<D>::build_pipeline() {
                         moving_walls_.move_to(end - scene_.time.start, step_count_ + 1, end);
                       }});
   }
+  if (!bodies_.empty()) {
+    stages.push_back({"body_kick_drift", [this](StepContext& c) {
+                        bodies_.kick_drift(c.dt, setup::to_space(gravity()), step_count_ + 1, time_ + c.dt);
+                      }});
+  }
   stages.push_back(neighbor_search_stage());
   if (scene_.solver.density == scene::DensityMethod::continuity)
     stages.push_back({"continuity", [this](StepContext& c) { integrate_density(step_gravity(c), c.dt); }});
   for (Stage& stage : force_stages()) stages.push_back(std::move(stage));
   stages.push_back({"kick", [this](StepContext& c) { kick(c.dt); }});
+  if (!bodies_.empty())
+    stages.push_back({"body_kick", [this](StepContext& c) { bodies_.kick(c.dt, setup::to_space(step_gravity(c))); }});
   if (scene_.domain.inflow) stages.push_back({"inflow_velocity", [this](StepContext&) { impose_inflow(0); }});
   stages.push_back({"advance_time", [this](StepContext& c) {
                       time_ += c.dt;
@@ -134,6 +144,7 @@ std::vector<Stage> Wcsph<D>::force_stages() {
   if (interactions_.contact_count() > 0)
     stages.push_back({"wall_state", [this](StepContext& c) { extrapolate_wall_state(step_gravity(c)); }});
   stages.push_back({"momentum", [this](StepContext& c) { compute_acceleration(step_gravity(c)); }});
+  if (!bodies_.empty()) stages.push_back({"body_force", [this](StepContext&) { compute_body_forces(); }});
   if (tension_) {
     std::string name;
     for (const std::string_view pass : passes::surface_tension_passes(scene_.solver.surface_tension.model)) {
@@ -252,6 +263,20 @@ void Wcsph<D>::compute_acceleration(const Vector<D>& gravity) {
                                       phases_ ? &multiphase : nullptr);
       },
       kernel_);
+}
+
+template <int D>
+void Wcsph<D>::compute_body_forces() {
+  const passes::ViscositySettings viscosity =
+      passes::viscosity_settings(scene_, eos_.sound_speed(), kinematic_viscosity_, smoothing_length_);
+  std::visit(
+      [&](const auto& kernel) {
+        bodies_.for_each_force_field([&](const Contact<D>& body, VectorView<D> force) {
+          passes::body_force<D>(kernel, viscosity, body, fluid_, fluid_fields_, force);
+        });
+      },
+      kernel_);
+  bodies_.sum_forces();
 }
 
 template <int D>

@@ -22,8 +22,8 @@ inline scene::Scene inflow_channel_scene(double spacing) {
   s.materials.push_back({"water", 1, 0.01, 10.0, std::nullopt});
   const double length = 1, gap = 0.25;
   s.fluid.push_back({0, scene::Box{{0, 0, 0}, {length, gap, 0}}, scene::Vec{1, 0, 0}});
-  s.walls.obstacles.push_back({scene::Plane{{0, 0, 0}, {0, 1, 0}}, {}, std::nullopt, std::nullopt});
-  s.walls.obstacles.push_back({scene::Plane{{0, gap, 0}, {0, -1, 0}}, {}, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back({scene::Plane{{0, 0, 0}, {0, 1, 0}}, {}, std::nullopt, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back({scene::Plane{{0, gap, 0}, {0, -1, 0}}, {}, std::nullopt, std::nullopt, std::nullopt});
   const double thickness = s.walls.layers * spacing;
   s.domain.box = {{0, -thickness, 0}, {length, gap + thickness, 0}};
   s.domain.periodic = {true, false, false};

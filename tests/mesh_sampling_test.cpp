@@ -38,7 +38,7 @@ void expect_same_samples(const ParticleSamples<D>& a, const ParticleSamples<D>& 
 TEST(MeshSampling, MeshCubeGivesTheBoxObstaclesParticles) {
   const scene::Box box{{0.2, 0.3, 0.1}, {0.6, 0.65, 0.55}};
   scene::Scene with_box = tank(3), with_mesh = tank(3);
-  with_box.walls.obstacles.push_back({box, {}, std::nullopt, std::nullopt});
+  with_box.walls.obstacles.push_back({box, {}, std::nullopt, std::nullopt, std::nullopt});
   with_mesh.walls.obstacles.push_back(test::mesh_obstacle(test::box_mesh(box.min, box.max)));
   const auto box_walls = sample_walls<3>(with_box);
   expect_same_samples(box_walls, sample_walls<3>(with_mesh));
@@ -50,7 +50,7 @@ TEST(MeshSampling, MeshCubeGivesTheBoxObstaclesParticles) {
 TEST(MeshSampling, PrismSectionGivesTheTwoDimensionalBoxObstacle) {
   const scene::Box box{{0.2, 0.3, 0}, {0.65, 0.6, 0}};
   scene::Scene with_box = tank(2), with_mesh = tank(2);
-  with_box.walls.obstacles.push_back({box, {}, std::nullopt, std::nullopt});
+  with_box.walls.obstacles.push_back({box, {}, std::nullopt, std::nullopt, std::nullopt});
   // A prism through z = 0: its section there is the rectangle.
   with_mesh.walls.obstacles.push_back(test::mesh_obstacle(test::box_mesh({0.2, 0.3, -0.4}, {0.65, 0.6, 0.3})));
   const auto box_walls = sample_walls<2>(with_box);

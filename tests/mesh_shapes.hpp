@@ -65,7 +65,7 @@ inline scene::Obstacle mesh_obstacle(scene::TriangleMesh surface) {
   scene::Mesh mesh;
   mesh.bounds = io::mesh_bounds(surface);
   mesh.surface = std::make_shared<const scene::TriangleMesh>(std::move(surface));
-  return {mesh, {}, std::nullopt, std::nullopt};
+  return {mesh, {}, std::nullopt, std::nullopt, std::nullopt};
 }
 
 }  // namespace tide::test

@@ -21,10 +21,11 @@ scene::Scene obstacle_scene() {
   s.fluid.push_back({0, scene::Box{{0, 0, 0}, {1, 0.6, 0}}});
   s.walls.layers = 3;
   s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {1, 1, 0}}, true};
-  s.walls.obstacles.push_back({scene::Ball{{0.5, 0.3, 0}, 0.1}, {}, std::nullopt, std::nullopt});
-  s.walls.obstacles.push_back({scene::Box{{0.1, 0.1, 0}, {0.2, 0.2, 0}}, {}, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back({scene::Ball{{0.5, 0.3, 0}, 0.1}, {}, std::nullopt, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back({scene::Box{{0.1, 0.1, 0}, {0.2, 0.2, 0}}, {}, std::nullopt, std::nullopt, std::nullopt});
   // A slope through the lower right corner: solid below y = x − 0.697 (between lattice points).
-  s.walls.obstacles.push_back({scene::Plane{{0.8, 0.103, 0}, {-1, 1, 0}}, {}, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back(
+      {scene::Plane{{0.8, 0.103, 0}, {-1, 1, 0}}, {}, std::nullopt, std::nullopt, std::nullopt});
   s.domain.box = {{-0.03, -0.03, 0}, {1.03, 2, 0}};
   return s;
 }
@@ -90,7 +91,8 @@ TEST(ParticleSampling, MovingLidOnAnOpenContainer) {
   s.particle_spacing = 0.1;
   s.walls.layers = 2;
   s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {1, 1, 0}}, true};
-  s.walls.obstacles.push_back({scene::Plane{{0, 1, 0}, {0, -1, 0}}, {2, 0, 0}, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back(
+      {scene::Plane{{0, 1, 0}, {0, -1, 0}}, {2, 0, 0}, std::nullopt, std::nullopt, std::nullopt});
   s.domain.box = {{-0.2, -0.2, 0}, {1.2, 1.2, 0}};
   const auto walls = sample_walls<2>(s);
   std::size_t lid = 0;

@@ -358,6 +358,40 @@ TEST(SceneReader, RefusesBadMotions) {
                  "no motion on a plane");
 }
 
+TEST(SceneReader, ReadsABody) {
+  const json body = {{"density", 500}, {"constraints", {{"locked_translation", {true, false}}, {"pivot", {0.8, 0.1}}}}};
+  const scene::Scene s = parse(with(full_2d_scene(), "/walls/obstacles/0/body", body));
+  ASSERT_TRUE(s.walls.obstacles[0].body.has_value());
+  EXPECT_EQ(s.walls.obstacles[0].body->density, 500);
+  const scene::BodyConstraints& constraints = s.walls.obstacles[0].body->constraints;
+  EXPECT_EQ(constraints.locked_translation, (std::array<bool, 3>{true, false, false}));
+  EXPECT_FALSE(constraints.locked_rotation);
+  EXPECT_EQ(constraints.pivot, vec(0.8, 0.1));
+  EXPECT_FALSE(s.walls.obstacles[1].body.has_value());
+}
+
+TEST(SceneReader, RefusesBadBodies) {
+  const json document = full_2d_scene();
+  expect_refused(with(document, "/walls/obstacles/0/body", json::object()), "/walls/obstacles/0/body/density",
+                 "a number > 0");
+  expect_refused(with(document, "/walls/obstacles/0/body", {{"density", -1}}), "/walls/obstacles/0/body/density",
+                 "a number > 0");
+  expect_refused(with(document, "/walls/obstacles/2/body", {{"density", 500}}), "/walls/obstacles/2/body",
+                 "no body on a plane");
+  const json turning = {{"rotation", {{"centre", {0.85, 0.05}}, {"angular_velocity", 1}}}};
+  expect_refused(
+      with(with(document, "/walls/obstacles/0/motion", turning), "/walls/obstacles/0/body", {{"density", 500}}),
+      "/walls/obstacles/0/body", "no body on an obstacle with a motion");
+  expect_refused(
+      with(document, "/walls/obstacles/0/body", {{"density", 500}, {"constraints", {{"rotation_axis", {0, 1}}}}}),
+      "/walls/obstacles/0/body/constraints/rotation_axis", "2D bodies turn about z");
+  expect_refused(with(document, "/walls/obstacles/0/body",
+                      {{"density", 500}, {"constraints", {{"locked_rotation", true}, {"spin", 1}}}}),
+                 "/walls/obstacles/0/body/constraints/spin", "one of the keys");
+  expect_unsupported(with(with(document, "/walls/obstacles/0/body", {{"density", 500}}), "/solver/scheme", "dfsph"),
+                     "/solver/scheme", "\"wcsph\" with a rigid body");
+}
+
 // A motion table is read from its CSV file; a bad row is refused with the file and its line.
 TEST(SceneReader, ReadsAMotionTableAndRefusesABadOne) {
   const std::filesystem::path directory = std::filesystem::temp_directory_path() / "tide_motion_table_test";

@@ -45,8 +45,9 @@ scene::Scene channel(scene::WallSlip walls_slip, std::optional<scene::WallSlip> 
   s.fluid.push_back({0, scene::Box{{0, 0, 0}, {length, gap, 0}}});
   const double thickness = s.walls.layers * s.particle_spacing;
   s.walls.slip = walls_slip;
-  s.walls.obstacles.push_back({scene::Plane{{0, 0, 0}, {0, 1, 0}}, {}, std::nullopt, std::nullopt});
-  s.walls.obstacles.push_back({scene::Plane{{0, gap, 0}, {0, -1, 0}}, {plate_speed, 0, 0}, upper_slip, std::nullopt});
+  s.walls.obstacles.push_back({scene::Plane{{0, 0, 0}, {0, 1, 0}}, {}, std::nullopt, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back(
+      {scene::Plane{{0, gap, 0}, {0, -1, 0}}, {plate_speed, 0, 0}, upper_slip, std::nullopt, std::nullopt});
   s.domain.box = {{0, -thickness, 0}, {length, gap + thickness, 0}};
   s.domain.periodic = {true, false, false};
   s.gravity = {0, 0, 0};

@@ -52,7 +52,7 @@ Impact dam_break(Length length) {
   const double spacing = length == Length::full ? 0.005 : 0.02;
   const double speed = std::sqrt(2 * standard_gravity * height);
   scene::Scene s = dam_break_scene("dam break with obstacle", spacing, height);
-  s.walls.obstacles.push_back({scene::Box{{0.6, 0, 0}, {0.64, 0.08, 0}}, {}, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back({scene::Box{{0.6, 0, 0}, {0.64, 0.08, 0}}, {}, std::nullopt, std::nullopt, std::nullopt});
   const double end_time = length == Length::full ? 1.5 : 0.8;
   return {"dam break 0.2 x 0.4 m onto a 0.04 x 0.08 m block and the far wall, dx = " + format_number(spacing) +
               " m, t = " + format_number(end_time) + " s",

@@ -54,10 +54,10 @@ scene::Scene channel_scene(int cells, const Variant& variant, bool moving_upper_
   s.fluid.push_back({0, scene::Box{{0, 0, 0}, {length, gap, 0}}});
   apply_variant(s, variant);
   const double thickness = s.walls.layers * s.particle_spacing;
-  s.walls.obstacles.push_back({scene::Plane{{0, 0, 0}, {0, 1, 0}}, {}, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back({scene::Plane{{0, 0, 0}, {0, 1, 0}}, {}, std::nullopt, std::nullopt, std::nullopt});
   s.walls.obstacles.push_back({scene::Plane{{0, gap, 0}, {0, -1, 0}},
                                moving_upper_plate ? scene::Vec{peak_speed, 0, 0} : scene::Vec{}, std::nullopt,
-                               std::nullopt});
+                               std::nullopt, std::nullopt});
   s.domain.box = {{0, -thickness, 0}, {length, gap + thickness, 0}};
   s.domain.periodic = {true, false, false};
   s.gravity = {moving_upper_plate ? 0 : force, 0, 0};

@@ -48,7 +48,8 @@ scene::Scene cavity_scene(const CavitySetup& setup, int cells, const Variant& va
   // The open-top container gives the floor and side walls; a plane obstacle at y = L, moving at U,
   // closes it as the lid (its wall particles span the corners above the side walls too).
   s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {side, side, 0}}, true};
-  s.walls.obstacles.push_back({scene::Plane{{0, side, 0}, {0, -1, 0}}, {lid_speed, 0, 0}, std::nullopt, std::nullopt});
+  s.walls.obstacles.push_back(
+      {scene::Plane{{0, side, 0}, {0, -1, 0}}, {lid_speed, 0, 0}, std::nullopt, std::nullopt, std::nullopt});
   apply_variant(s, variant);
   const double thickness = s.walls.layers * s.particle_spacing;
   s.domain.box = {{-thickness, -thickness, 0}, {side + thickness, side + thickness, 0}};

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
+#include "tide/core/scene_body.hpp"
 #include "tide/core/scene_motion.hpp"
 #include "tide/core/triangle_mesh.hpp"
 
@@ -105,6 +106,7 @@ struct Obstacle {
   Vec velocity{};
   std::optional<WallSlip> slip;  // unset: the walls' slip (Walls::slip)
   std::optional<Motion> motion;
+  std::optional<Body> body;  // moved by the fluid (not with a motion)
 };
 
 /// Wall layers a kernel needs so that a fluid particle touching a wall has wall particles across

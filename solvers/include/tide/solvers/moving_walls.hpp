@@ -14,6 +14,47 @@
 
 namespace tide {
 
+/// Puts the particles of `contact` where the rigid motion `solid` has them: for each particle,
+/// solid.point(x0) of its start position x0 (a field of the contact) gives its position, which is
+/// wrapped into the domain on its periodic axes, its velocity (the contact's surface velocity)
+/// and its acceleration. Throws InstabilityError with `what` and `hint` when a particle leaves
+/// the domain on a non-periodic axis (the neighbour search would drop it).
+template <int D, class Solid>
+void place_rigid_particles(const GridDomain<D>& domain, Contact<D>& contact, VectorField start_field,
+                           const Solid& solid, std::uint64_t step, double time, const std::string& what,
+                           const std::string& hint) {
+  ParticleSet<D>& set = contact.particles();
+  const WallFields<D>& w = contact.fields();
+  const auto start = std::as_const(set)[start_field];
+  auto x = set[w.position];
+  auto v = set[*w.surface_velocity];
+  auto a = set[*w.acceleration];
+  for_each_particle(set.size(), [&](std::size_t b) {
+    Eigen::Vector3d x0 = Eigen::Vector3d::Zero();
+    for (int d = 0; d < D; ++d) x0[d] = static_cast<double>(start.component[d][b]);
+    const auto p = solid.point(x0);
+    for (int d = 0; d < D; ++d) {
+      Real coordinate = static_cast<Real>(p.position[d]);
+      if (domain.periodic[d]) {  // into [lower, upper), as the neighbour grid keeps its particles
+        const Real length = domain.upper[d] - domain.lower[d];
+        coordinate -= length * std::floor((coordinate - domain.lower[d]) / length);
+      }
+      x.component[d][b] = coordinate;
+      v.component[d][b] = static_cast<Real>(p.velocity[d]);
+      a.component[d][b] = static_cast<Real>(p.acceleration[d]);
+    }
+  });
+  const auto id = std::as_const(set)[set.id()];
+  for (std::size_t b = 0; b < set.size(); ++b) {
+    for (int d = 0; d < D; ++d) {
+      if (domain.periodic[d]) continue;
+      const Real coordinate = x.component[d][b];
+      if (coordinate >= domain.lower[d] && coordinate < domain.upper[d]) continue;
+      throw InstabilityError(id[b], "position", static_cast<double>(coordinate), step, time, what, hint);
+    }
+  }
+}
+
 /// The wall contacts whose particles follow a prescribed rigid motion (scene::Motion): a stage
 /// of the step puts them where the motion has them at the step's end, with the velocity the
 /// no-slip mirror and the continuity equation read (WallFields::surface_velocity) and the
@@ -48,39 +89,10 @@ class MovingWalls {
   };
 
   void move(const Wall& wall, const RigidPose& pose, std::uint64_t step, double time) const {
-    ParticleSet<D>& set = wall.contact->particles();
-    const WallFields<D>& w = wall.contact->fields();
-    const auto start = std::as_const(set)[wall.start];
-    auto x = set[w.position];
-    auto v = set[*w.surface_velocity];
-    auto a = set[*w.acceleration];
-    for_each_particle(set.size(), [&](std::size_t b) {
-      Eigen::Vector3d x0 = Eigen::Vector3d::Zero();
-      for (int d = 0; d < D; ++d) x0[d] = static_cast<double>(start.component[d][b]);
-      const RigidPose::Point p = pose.point(x0);
-      for (int d = 0; d < D; ++d) {
-        Real coordinate = static_cast<Real>(p.position[d]);
-        if (domain_.periodic[d]) {  // into [lower, upper), as the neighbour grid keeps its particles
-          const Real length = domain_.upper[d] - domain_.lower[d];
-          coordinate -= length * std::floor((coordinate - domain_.lower[d]) / length);
-        }
-        x.component[d][b] = coordinate;
-        v.component[d][b] = static_cast<Real>(p.velocity[d]);
-        a.component[d][b] = static_cast<Real>(p.acceleration[d]);
-      }
-    });
-    const auto id = std::as_const(set)[set.id()];
-    for (std::size_t b = 0; b < set.size(); ++b) {
-      for (int d = 0; d < D; ++d) {
-        if (domain_.periodic[d]) continue;
-        const Real coordinate = x.component[d][b];
-        if (coordinate >= domain_.lower[d] && coordinate < domain_.upper[d]) continue;
-        throw InstabilityError(
-            id[b], "position", static_cast<double>(coordinate), step, time,
-            "its prescribed motion carries a particle of \"" + wall.contact->name() + "\" out of the domain",
-            "Enlarge domain.box or change the obstacle's motion.");
-      }
-    }
+    place_rigid_particles<D>(
+        domain_, *wall.contact, wall.start, pose, step, time,
+        "its prescribed motion carries a particle of \"" + wall.contact->name() + "\" out of the domain",
+        "Enlarge domain.box or change the obstacle's motion.");
   }
 
   GridDomain<D> domain_;

@@ -17,6 +17,7 @@
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/phases.hpp"
 #include "tide/solvers/pipeline.hpp"
+#include "tide/solvers/rigid_bodies.hpp"
 #include "tide/solvers/simulation.hpp"
 #include "tide/solvers/time_step.hpp"
 
@@ -70,6 +71,8 @@ class Wcsph final : public Simulation<D> {
   Real wall_strength(Index a) const;
   double bytes_per_particle() const override;
   MemoryUsage memory_usage() const override;
+  /// The obstacles the fluid moves (walls.obstacles[k].body), in the order of the scene.
+  const RigidBodies<D>& bodies() const { return bodies_; }
 
  private:
   void set_hydrostatic_density();
@@ -96,6 +99,8 @@ class Wcsph final : public Simulation<D> {
   void apply_equation_of_state();
   void extrapolate_wall_state(const Vector<D>& gravity);
   void compute_acceleration(const Vector<D>& gravity);
+  /// The fluid's force on every body particle, summed per body (RigidBodies::sum_forces).
+  void compute_body_forces();
   void add_surface_tension();
   /// Continuity density: ρ += Δt Dρ/Dt.
   void integrate_density(const Vector<D>& gravity, Real dt);
@@ -123,6 +128,7 @@ class Wcsph final : public Simulation<D> {
   FluidFields<D> fluid_fields_;
   Interactions<D> interactions_;
   MovingWalls<D> moving_walls_;
+  RigidBodies<D> bodies_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   TimeStep last_time_step_;

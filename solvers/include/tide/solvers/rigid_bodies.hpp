@@ -1,0 +1,115 @@
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tide/core/particle_set.hpp"
+#include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/solvers/contact.hpp"
+#include "tide/solvers/moving_walls.hpp"
+#include "tide/solvers/rigid_body.hpp"
+
+namespace tide {
+
+/// The wall contacts that are rigid bodies moved by the fluid (scene::Body): each is a moving
+/// wall contact whose particles carry the force the fluid exerts on them (passes/body_force.hpp),
+/// summed over the body in the particles' order, which the neighbour sort fixes for any thread
+/// count, into a force and a torque about the body's reference point. Gravity acts at the centre
+/// of mass. The bodies step by velocity Verlet with the fluid: kick_drift at the step's start
+/// (half a kick with the forces of the last step's end, then the drift, placing the particles
+/// at the step's end), kick at its end with the forces there.
+template <int D>
+class RigidBodies {
+ public:
+  explicit RigidBodies(const GridDomain<D>& domain) : domain_(domain) {}
+
+  /// Moves `contact` (a moving contact whose fields have a surface velocity and an acceleration)
+  /// as `body`; `start` holds each particle's position at the start, `force` receives the
+  /// fluid's force on it.
+  void add(Contact<D>& contact, RigidBody body, VectorField start, VectorField force) {
+    bodies_.push_back({&contact, std::move(body), start, force});
+  }
+
+  bool empty() const { return bodies_.empty(); }
+  std::size_t size() const { return bodies_.size(); }
+  const RigidBody& body(std::size_t k) const { return bodies_[k].body; }
+  const Contact<D>& contact(std::size_t k) const { return *bodies_[k].contact; }
+  /// The fluid's force on body k and its torque about the reference point, as last summed.
+  const Eigen::Vector3d& fluid_force(std::size_t k) const { return bodies_[k].force; }
+  const Eigen::Vector3d& fluid_torque(std::size_t k) const { return bodies_[k].torque; }
+
+  /// Where each body's fluid force goes: f(contact, force view) for every body, e.g. the
+  /// body_force pass.
+  template <class F>
+  void for_each_force_field(F&& f) {
+    for (Entry& entry : bodies_) f(std::as_const(*entry.contact), entry.contact->particles()[entry.force_field]);
+  }
+
+  /// Sums each body's particle forces into its force and torque (after the body_force pass).
+  void sum_forces() {
+    for (Entry& entry : bodies_) {
+      const ParticleSet<D>& set = entry.contact->particles();
+      const auto force = set[entry.force_field];
+      const auto start = set[entry.start];
+      entry.force.setZero();
+      entry.torque.setZero();
+      for (std::size_t b = 0; b < set.size(); ++b) {
+        Eigen::Vector3d f = Eigen::Vector3d::Zero(), x0 = Eigen::Vector3d::Zero();
+        for (int d = 0; d < D; ++d) {
+          f[d] = static_cast<double>(force.component[d][b]);
+          x0[d] = static_cast<double>(start.component[d][b]);
+        }
+        // The lever from the reference point, from the start position: no periodic image.
+        const Eigen::Vector3d lever = entry.body.point(x0).position - entry.body.reference_point();
+        entry.force += f;
+        entry.torque += lever.cross(f);
+      }
+    }
+  }
+
+  /// Half a kick (dt/2) with the last summed forces and gravity g, then the drift by dt; places
+  /// the particles. Throws InstabilityError naming the body when one leaves the domain.
+  void kick_drift(double dt, const Eigen::Vector3d& g, std::uint64_t step, double time) {
+    for (Entry& entry : bodies_) {
+      kick_body(entry, dt / 2, g);
+      entry.body.drift(dt);
+      place(entry, step, time);
+    }
+  }
+
+  /// Half a kick (dt/2) with the last summed forces and gravity g.
+  void kick(double dt, const Eigen::Vector3d& g) {
+    for (Entry& entry : bodies_) kick_body(entry, dt / 2, g);
+  }
+
+  /// Places every body's particles where the body is, with its velocities and accelerations.
+  void place(std::uint64_t step, double time) {
+    for (Entry& entry : bodies_) place(entry, step, time);
+  }
+
+ private:
+  struct Entry {
+    Contact<D>* contact;
+    RigidBody body;
+    VectorField start;
+    VectorField force_field;
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  };
+
+  static void kick_body(Entry& entry, double half_dt, const Eigen::Vector3d& g) {
+    entry.body.kick(entry.force + entry.body.gravity_force(g), entry.torque + entry.body.gravity_torque(g), half_dt);
+  }
+
+  void place(Entry& entry, std::uint64_t step, double time) const {
+    place_rigid_particles<D>(domain_, *entry.contact, entry.start, entry.body, step, time,
+                             "the body \"" + entry.contact->name() + "\" left the domain",
+                             "Enlarge domain.box, or check the body's density and the time step.");
+  }
+
+  GridDomain<D> domain_;
+  std::vector<Entry> bodies_;
+};
+
+}  // namespace tide

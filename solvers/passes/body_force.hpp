@@ -1,0 +1,68 @@
+#pragma once
+
+// The force the fluid exerts on each particle of a rigid body: the reaction to what the momentum
+// pass (momentum.hpp) gives the fluid from that particle, so that fluid and body exchange
+// momentum in equal and opposite amounts.
+
+#include <cmath>
+#include <utility>
+
+#include "momentum.hpp"
+#include "neighbor_walk.hpp"
+#include "tide/solvers/interactions.hpp"
+#include "tide/solvers/particle_fields.hpp"
+
+namespace tide::passes {
+
+/// F_b = −Σ_j m_j a_jb for every particle b of `body`, where a_jb is the acceleration the
+/// momentum pass gives fluid particle j from b: a_jb = −m_b (p_j/ρ_j² + p_b/ρ_b²) ∇W_jb plus, for a
+/// no-slip body, the viscous term of detail::viscous_coefficient with b's mirrored velocity. A
+/// gather over b's fluid neighbours (∇W_jb = −∇W_bj), stored in `force`. The one-fluid,
+/// no-artificial-stress form of the momentum pass: the scene checks refuse bodies with the others.
+template <int D, class Kernel>
+void body_force(const Kernel& kernel, const ViscositySettings& settings, const Contact<D>& body,
+                const ParticleSet<D>& fluid, const FluidFields<D>& f, VectorView<D> force) {
+  const auto x = fluid[f.position];
+  const auto v = fluid[f.velocity];
+  const auto mass = fluid[f.mass];
+  const auto density = fluid[f.density];
+  const auto pressure = fluid[f.pressure];
+  const WallFields<D>& w = body.fields();
+  const ParticleSet<D>& set = body.particles();
+  const auto body_mass = set[w.mass];
+  const auto body_density = set[w.density];
+  const auto body_pressure = set[w.pressure];
+  const ConstVectorView<D> body_velocity = body.viscous() ? set[*w.velocity] : ConstVectorView<D>{};
+  const auto run = [&]<scene::ViscosityModel Model, bool Viscous>() {
+    for_each_contact_particle<D>(body, x, VectorOutput<D>{force}, [&](std::size_t b, const auto& fluid_pairs) {
+      const Real m_b = body_mass[b];
+      const Real rho_b = body_density[b];
+      const Real p_over_rho2_b = body_pressure[b] / (rho_b * rho_b);
+      Vector<D> total = Vector<D>::Zero();
+      fluid_pairs([&](Index j, const Vector<D>& x_bj, Real r2) {
+        const Real rho_j = density[j];
+        const Vector<D> x_jb = -x_bj;
+        const Vector<D> grad_w = kernel.derivative_over_r(std::sqrt(r2)) * x_jb;
+        Vector<D> a_jb = -(m_b * (pressure[j] / (rho_j * rho_j) + p_over_rho2_b)) * grad_w;
+        if constexpr (Viscous) {
+          const Vector<D> v_jb = v[j] - body_velocity[b];
+          const Real coefficient =
+              detail::viscous_coefficient<Model>(settings, m_b, rho_j, rho_b, v_jb.dot(x_jb), x_jb.dot(grad_w), r2);
+          a_jb += coefficient * (Model == scene::ViscosityModel::artificial ? grad_w : v_jb);
+        }
+        total -= mass[j] * a_jb;
+      });
+      return total;
+    });
+  };
+  const bool artificial = settings.model == scene::ViscosityModel::artificial;
+  if (!body.viscous()) {
+    run.template operator()<scene::ViscosityModel::artificial, false>();
+  } else if (artificial) {
+    run.template operator()<scene::ViscosityModel::artificial, true>();
+  } else {
+    run.template operator()<scene::ViscosityModel::laminar, true>();
+  }
+}
+
+}  // namespace tide::passes
