@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -19,6 +20,7 @@
 #include "tide/io/probe_writer.hpp"
 #include "tide/io/recovery_writer.hpp"
 #include "tide/io/scene_reader.hpp"
+#include "tide/io/series_writer.hpp"
 #include "tide/solvers/capabilities.hpp"
 #include "tide/solvers/instability.hpp"
 #include "tide/solvers/probes.hpp"
@@ -123,6 +125,74 @@ class SeriesRecorder {
   OutputSchedule schedule_;
 };
 
+/// Each rigid body's state into <out>/bodies.csv, columns "<key path>.<quantity>": the centre of
+/// mass, the orientation (2D: the angle about z; 3D: the unit quaternion w, x, y, z from the
+/// start), the velocity of the centre, the angular velocity, and the fluid's force on the body
+/// and its torque about the reference point (the centre, or the pivot), without gravity.
+template <int D>
+SeriesRecorder<D> body_recorder(const scene::Scene& scene, const RigidBodies<D>& bodies,
+                                const std::filesystem::path& output_directory) {
+  const std::vector<std::string> axes =
+      D == 2 ? std::vector<std::string>{"x", "y"} : std::vector<std::string>{"x", "y", "z"};
+  std::vector<std::string> columns;
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const std::string body = bodies.contact(k).name() + ".";
+    for (const std::string& a : axes) columns.push_back(body + a);
+    if (D == 2) {
+      columns.push_back(body + "angle");
+    } else {
+      for (const char* q : {"qw", "qx", "qy", "qz"}) columns.push_back(body + q);
+    }
+    for (const std::string& a : axes) columns.push_back(body + "v" + a);
+    if (D == 2) {
+      columns.push_back(body + "omega");
+    } else {
+      for (const std::string& a : axes) columns.push_back(body + "omega_" + a);
+    }
+    for (const std::string& a : axes) columns.push_back(body + "f" + a);
+    if (D == 2) {
+      columns.push_back(body + "torque");
+    } else {
+      for (const std::string& a : axes) columns.push_back(body + "torque_" + a);
+    }
+  }
+  const std::vector<std::string> comments{
+      "TideSPH rigid bodies of " + scene.source,
+      "SI units; orientation from the start (2D: angle about z in rad; 3D: unit quaternion); force and torque "
+      "are the fluid's, without gravity, the torque about the centre of mass or the pivot"};
+  return SeriesRecorder<D>(scene,
+                           std::make_unique<io::SeriesWriter>(output_directory / "bodies.csv", comments, columns),
+                           [](const Simulation<D>& s) {
+                             const RigidBodies<D>& bodies = *s.bodies();
+                             std::vector<double> row;
+                             for (std::size_t k = 0; k < bodies.size(); ++k) {
+                               const RigidBody& body = bodies.body(k);
+                               const Eigen::Vector3d centre = body.centre(), omega = body.angular_velocity();
+                               const Eigen::Vector3d velocity = body.point(body.mass_properties().centre).velocity;
+                               const Eigen::Quaterniond q = body.orientation();
+                               for (int d = 0; d < D; ++d) row.push_back(centre[d]);
+                               if (D == 2) {
+                                 row.push_back(2 * std::atan2(q.z(), q.w()));
+                               } else {
+                                 row.insert(row.end(), {q.w(), q.x(), q.y(), q.z()});
+                               }
+                               for (int d = 0; d < D; ++d) row.push_back(velocity[d]);
+                               if (D == 2) {
+                                 row.push_back(omega.z());
+                               } else {
+                                 for (int d = 0; d < 3; ++d) row.push_back(omega[d]);
+                               }
+                               for (int d = 0; d < D; ++d) row.push_back(bodies.fluid_force(k)[d]);
+                               if (D == 2) {
+                                 row.push_back(bodies.fluid_torque(k).z());
+                               } else {
+                                 for (int d = 0; d < 3; ++d) row.push_back(bodies.fluid_torque(k)[d]);
+                               }
+                             }
+                             return row;
+                           });
+}
+
 /// The scene's probes into <out>/probes.csv, and output.recovery into <out>/recovery.csv (its
 /// initial mass measured now: std::invalid_argument when its region holds none).
 template <int D>
@@ -142,6 +212,8 @@ std::vector<SeriesRecorder<D>> series_recorders(const scene::Scene& scene, const
           return std::vector<double>{mass, meter->recovery(mass)};
         });
   }
+  if (const RigidBodies<D>* bodies = simulation.bodies(); bodies && !bodies->empty())
+    recorders.push_back(body_recorder<D>(scene, *bodies, output_directory));
   return recorders;
 }
 

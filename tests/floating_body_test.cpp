@@ -75,10 +75,10 @@ double water_level(const Wcsph<2>& simulation) {
 
 TEST(FloatingBody, BoxSettlesAtArchimedesDraftUpright) {
   Wcsph<2> simulation(floating_box());
-  ASSERT_EQ(simulation.bodies().size(), 1u);
-  EXPECT_EQ(simulation.bodies().contact(0).name(), "walls.obstacles[0]");
+  ASSERT_EQ(simulation.bodies()->size(), 1u);
+  EXPECT_EQ(simulation.bodies()->contact(0).name(), "walls.obstacles[0]");
   EXPECT_TRUE(simulation.pipeline().contains("body_force"));
-  const RigidBody& box = simulation.bodies().body(0);
+  const RigidBody& box = simulation.bodies()->body(0);
   double draft_sum = 0, worst_tilt = 0;
   int samples = 0;
   while (simulation.time() < 3.0) {
@@ -117,14 +117,14 @@ TEST(FloatingBody, FluidAndBodyConserveMomentum) {
   s.gravity = {0, 0, 0};
   s.solver.alpha = 0.1;
   Wcsph<2> simulation(s);
-  ASSERT_EQ(simulation.bodies().size(), 1u);
+  ASSERT_EQ(simulation.bodies()->size(), 1u);
   const auto momentum = [&] {
     const auto v = simulation.fluid()[simulation.fluid_fields().velocity];
     const auto m = simulation.fluid()[simulation.fluid_fields().mass];
     Eigen::Vector2d p = Eigen::Vector2d::Zero();
     for (std::size_t i = 0; i < simulation.fluid().size(); ++i)
       p += static_cast<double>(m[i]) * Eigen::Vector2d(v[i][0], v[i][1]);
-    const RigidBody& body = simulation.bodies().body(0);
+    const RigidBody& body = simulation.bodies()->body(0);
     return std::pair{p, Eigen::Vector2d(body.mass_properties().mass * body.velocity().head<2>())};
   };
   const auto [fluid_start, body_start] = momentum();

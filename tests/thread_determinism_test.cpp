@@ -219,7 +219,7 @@ TEST(ThreadDeterminism, DamBreakCarryingALightBoxIsBitwiseIdentical) {
     s.walls.obstacles.push_back(box);
     Wcsph<2> simulation(s);
     std::vector<Real> values = state_after_steps(simulation, 200);
-    const RigidBody& body = simulation.bodies().body(0);
+    const RigidBody& body = simulation.bodies()->body(0);
     for (const double x : {body.centre().x(), body.centre().y(), body.orientation().z(), body.orientation().w(),
                            body.velocity().x(), body.velocity().y(), body.angular_momentum().z()})
       values.push_back(static_cast<Real>(x));

@@ -222,6 +222,34 @@ TEST_F(TideCommand, UntilOverridesTheEndTime) {
   EXPECT_FALSE(fs::exists(out / "frames_000003.h5"));
 }
 
+// A scene with a rigid body gets <out>/bodies.csv and the body's frames. The box is let go in the
+// air beside the water: it falls freely, y = y0 − g t²/2, which the velocity Verlet of the body
+// follows to round-off.
+TEST_F(TideCommand, RunWritesBodies) {
+  const fs::path out = directory_ / "out";
+  const fs::path scene = write_scene(R"("open_top": true}},)", R"("open_top": true},
+    "obstacles": [{"box": {"min": [0.25, 0.1], "max": [0.3, 0.14]}, "body": {"density": 500}}]},
+  "output": {"probe_interval": 0.01},)");
+  const CommandResult result = run_tide("run --quiet --out " + out.string() + " " + scene.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(fs::exists(out / "walls_obstacles_0_000000.h5"));
+  std::ifstream csv(out / "bodies.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 3u + 6u);  // two comment lines, the columns, t = 0, 0.01, ..., 0.05
+  EXPECT_EQ(lines[2],
+            "time,walls.obstacles[0].x,walls.obstacles[0].y,walls.obstacles[0].angle,walls.obstacles[0].vx,"
+            "walls.obstacles[0].vy,walls.obstacles[0].omega,walls.obstacles[0].fx,walls.obstacles[0].fy,"
+            "walls.obstacles[0].torque");
+  std::istringstream last(lines.back());
+  double time = 0, x = 0, y = 0;
+  char comma = 0;
+  last >> time >> comma >> x >> comma >> y;
+  EXPECT_GT(time, 0.04);
+  EXPECT_NEAR(x, 0.275, 1e-12);
+  EXPECT_NEAR(y, 0.12 - 9.81 * time * time / 2, 1e-12);
+}
+
 // A scene with probes gets <out>/probes.csv: the header naming the scene and each probe, then a
 // row at the start and one per probe interval.
 TEST_F(TideCommand, RunWritesProbes) {

@@ -12,6 +12,7 @@
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/pipeline.hpp"
+#include "tide/solvers/rigid_bodies.hpp"
 #include "tide/solvers/step_report.hpp"
 
 namespace tide {
@@ -46,6 +47,8 @@ class Simulation {
   /// The stages step() runs, in order, as the scene assembled them, with the wall time of each
   /// summed since construction: a stage the scene does not need is not in the list.
   virtual const Pipeline& pipeline() const = 0;
+  /// The rigid bodies the fluid moves (walls.obstacles[k].body); null for a scheme without them.
+  virtual const RigidBodies<D>* bodies() const { return nullptr; }
   /// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
   virtual double bytes_per_particle() const = 0;
   /// Those bytes item by item (MemoryUsage); a scheme that does not itemise them reports one item.

@@ -71,8 +71,7 @@ class Wcsph final : public Simulation<D> {
   Real wall_strength(Index a) const;
   double bytes_per_particle() const override;
   MemoryUsage memory_usage() const override;
-  /// The obstacles the fluid moves (walls.obstacles[k].body), in the order of the scene.
-  const RigidBodies<D>& bodies() const { return bodies_; }
+  const RigidBodies<D>* bodies() const override { return &bodies_; }
 
  private:
   void set_hydrostatic_density();
