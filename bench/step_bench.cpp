@@ -329,6 +329,16 @@ void widen_support(scene::Scene& s) {
   }
 }
 
+// A cube of 0.2 m inside the water column of the 3D dam break (1 m high), half the water's
+// density: a rigid body the water moves, or (`body` false) the same cube fixed, with the same wall
+// particles, so that the difference between the two is what a body costs.
+void add_cube(scene::Scene& s, bool body) {
+  scene::Obstacle cube;
+  cube.shape = scene::Box{{0.4, 0.4, 0.6}, {0.6, 0.6, 0.8}};
+  if (body) cube.body = scene::Body{500, {}};
+  s.walls.obstacles.push_back(cube);
+}
+
 // Each optional feature of the WCSPH step, on and off, on the 3D dam break at 10^5 particles.
 // Where a feature needs more than a switch (two fluids for csf, a wider support for the pairwise
 // forces), off is the same scene without the feature.
@@ -360,6 +370,7 @@ void register_features() {
       {"shifting", [](scene::Scene& s) { s.solver.shifting = scene::Shifting::fickian; },
        [](scene::Scene& s) { s.solver.shifting = scene::Shifting::none; }},
       {"multiple_phases", split_into_two_fluids, [](scene::Scene&) {}},
+      {"rigid_body", [](scene::Scene& s) { add_cube(s, true); }, [](scene::Scene& s) { add_cube(s, false); }},
       {"surface_tension_akinci",
        [](scene::Scene& s) {
          s.solver.surface_tension.model = scene::SurfaceTensionModel::akinci;
