@@ -7,14 +7,13 @@
 #include <stdexcept>
 
 #include "tide/solvers/mesh_depth.hpp"
+#include "tide/solvers/rigid_motion.hpp"
 
 namespace tide {
 namespace {
 
 using Vector3 = Eigen::Vector3d;
 using Matrix3 = Eigen::Matrix3d;
-
-Vector3 point(const scene::Vec& v) { return {v[0], v[1], v[2]}; }
 
 // The inertia tensor of second moments C = ∫ ρ x xᵀ dV about the centre: I = tr(C) 1 − C.
 Matrix3 inertia_from_second_moments(const Matrix3& second_moments) {
@@ -36,9 +35,9 @@ MassProperties from_moments(double volume, const Vector3& first, const Matrix3& 
 }  // namespace
 
 MassProperties mass_properties(const scene::Box& box, double density, int dimension) {
-  const Vector3 extent = point(box.max) - point(box.min);
+  const Vector3 extent = to_eigen(box.max) - to_eigen(box.min);
   MassProperties properties;
-  properties.centre = (point(box.min) + point(box.max)) / 2;
+  properties.centre = (to_eigen(box.min) + to_eigen(box.max)) / 2;
   if (dimension == 2) {
     properties.centre.z() = 0;
     properties.mass = density * extent.x() * extent.y();
@@ -55,7 +54,7 @@ MassProperties mass_properties(const scene::Box& box, double density, int dimens
 MassProperties mass_properties(const scene::Ball& ball, double density, int dimension) {
   const double r = ball.radius;
   MassProperties properties;
-  properties.centre = point(ball.centre);
+  properties.centre = to_eigen(ball.centre);
   if (dimension == 2) {
     properties.centre.z() = 0;
     properties.mass = density * std::numbers::pi * r * r;
@@ -70,7 +69,7 @@ MassProperties mass_properties(const scene::Ball& ball, double density, int dime
 MassProperties mass_properties(const scene::Mesh& mesh, double density, int dimension) {
   const scene::TriangleMesh& surface = *mesh.surface;
   // About the middle of the bounds, so the moments do not lose digits to a mesh far from 0.
-  Vector3 origin = (point(mesh.bounds.min) + point(mesh.bounds.max)) / 2;
+  Vector3 origin = (to_eigen(mesh.bounds.min) + to_eigen(mesh.bounds.max)) / 2;
   double volume = 0;
   Vector3 first = Vector3::Zero();
   Matrix3 second = Matrix3::Zero();
@@ -82,8 +81,8 @@ MassProperties mass_properties(const scene::Mesh& mesh, double density, int dime
     for (const auto& t : surface.triangles) {
       const auto segment = triangle_section(surface, t);
       if (!segment) continue;
-      const Vector3 a = point(surface.vertices[t[0]]), b = point(surface.vertices[t[1]]),
-                    c = point(surface.vertices[t[2]]);
+      const Vector3 a = to_eigen(surface.vertices[t[0]]), b = to_eigen(surface.vertices[t[1]]),
+                    c = to_eigen(surface.vertices[t[2]]);
       const Eigen::Vector2d outward = (b - a).cross(c - a).head<2>();
       Eigen::Vector2d p = (*segment)[0] - origin.head<2>(), q = (*segment)[1] - origin.head<2>();
       const Eigen::Vector2d along = q - p;
@@ -105,8 +104,8 @@ MassProperties mass_properties(const scene::Mesh& mesh, double density, int dime
   // origin: volume s/6 with s = a · (b × c), ∫x dV = s (a + b + c)/24 and
   // ∫x xᵀ dV = s (a aᵀ + b bᵀ + c cᵀ + (a + b + c)(a + b + c)ᵀ)/120 (Tonon 2004, eq. 2–4).
   for (const auto& t : surface.triangles) {
-    const Vector3 a = point(surface.vertices[t[0]]) - origin, b = point(surface.vertices[t[1]]) - origin,
-                  c = point(surface.vertices[t[2]]) - origin;
+    const Vector3 a = to_eigen(surface.vertices[t[0]]) - origin, b = to_eigen(surface.vertices[t[1]]) - origin,
+                  c = to_eigen(surface.vertices[t[2]]) - origin;
     const double s = a.dot(b.cross(c));
     const Vector3 sum = a + b + c;
     volume += s / 6;

@@ -3,14 +3,14 @@
 #include <Eigen/Cholesky>
 #include <stdexcept>
 
+#include "tide/solvers/rigid_motion.hpp"
+
 namespace tide {
 namespace {
 
 // The iterations of the implicit midpoint rotation: each gains about one order of ω dt, and a
 // fixed count keeps the result the same on every run.
 constexpr int midpoint_iterations = 4;
-
-Eigen::Vector3d vector(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
 
 // exp(ω dt) as a unit quaternion: a turn by |ω| dt about ω.
 Eigen::Quaterniond turn(const Eigen::Vector3d& omega, double dt) {
@@ -28,7 +28,7 @@ RigidBody::RigidBody(const MassProperties& properties, const scene::BodyConstrai
     if (constraints.locked_translation[d] || (dimension == 2 && d == 2)) translation_mask_[d] = 0;
   start_reference_ = properties.centre;
   if (constraints.pivot) {
-    start_reference_ = vector(*constraints.pivot);
+    start_reference_ = to_eigen(*constraints.pivot);
     translation_mask_.setZero();
   }
   rotates_ = !constraints.locked_rotation;
@@ -36,7 +36,7 @@ RigidBody::RigidBody(const MassProperties& properties, const scene::BodyConstrai
     has_axis_ = true;  // about z
   } else if (constraints.rotation_axis) {
     has_axis_ = true;
-    axis_ = vector(*constraints.rotation_axis).normalized();
+    axis_ = to_eigen(*constraints.rotation_axis).normalized();
   }
   start_inertia_ = inertia_about(properties, start_reference_);
   if (rotates_ && has_axis_ && !(axis_.dot(start_inertia_ * axis_) > 0))
@@ -70,8 +70,9 @@ void RigidBody::kick(const Eigen::Vector3d& force, const Eigen::Vector3d& torque
   } else if (has_axis_) {
     angular_acceleration_ = applied / axis_.dot(inertia * axis_);
   } else {
-    const Eigen::Vector3d omega = angular_velocity_at(orientation_);
-    angular_acceleration_ = inertia.ldlt().solve(applied - omega.cross(angular_momentum_));
+    const auto solver = inertia.ldlt();
+    const Eigen::Vector3d omega = solver.solve(angular_momentum_);
+    angular_acceleration_ = solver.solve(applied - omega.cross(angular_momentum_));
   }
   angular_momentum_ += dt * applied;
 }
@@ -85,11 +86,15 @@ void RigidBody::drift(double dt) {
   orientation_ = (turn(omega, dt) * orientation_).normalized();
 }
 
-RigidBody::Point RigidBody::point(const Eigen::Vector3d& start) const {
-  const Eigen::Vector3d r = orientation_ * (start - start_reference_);
-  const Eigen::Vector3d omega = angular_velocity();
-  return {reference_ + r, velocity_ + omega.cross(r),
-          acceleration_ + angular_acceleration_.cross(r) + omega.cross(omega.cross(r))};
+RigidBody::Kinematics RigidBody::kinematics() const {
+  return {start_reference_, reference_,         orientation_,         velocity_,
+          acceleration_,    angular_velocity(), angular_acceleration_};
+}
+
+RigidBody::Point RigidBody::Kinematics::point(const Eigen::Vector3d& start) const {
+  const Eigen::Vector3d r = lever(start);
+  return {reference + r, velocity + angular_velocity.cross(r),
+          acceleration + angular_acceleration.cross(r) + angular_velocity.cross(angular_velocity.cross(r))};
 }
 
 double RigidBody::kinetic_energy() const {

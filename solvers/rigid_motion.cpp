@@ -11,8 +11,6 @@
 namespace tide {
 namespace {
 
-Eigen::Vector3d to_eigen(const scene::Vec& v) { return {v[0], v[1], v[2]}; }
-
 RigidPose rotating_about(const scene::Vec& centre, const scene::Vec& axis) {
   RigidPose pose;
   pose.centre = to_eigen(centre);

@@ -52,6 +52,7 @@ class RigidBodies {
       const ParticleSet<D>& set = entry.contact->particles();
       const auto force = set[entry.force_field];
       const auto start = set[entry.start];
+      const RigidBody::Kinematics motion = entry.body.kinematics();
       entry.force.setZero();
       entry.torque.setZero();
       for (std::size_t b = 0; b < set.size(); ++b) {
@@ -61,7 +62,7 @@ class RigidBodies {
           x0[d] = static_cast<double>(start.component[d][b]);
         }
         // The lever from the reference point, from the start position: no periodic image.
-        const Eigen::Vector3d lever = entry.body.point(x0).position - entry.body.reference_point();
+        const Eigen::Vector3d lever = motion.lever(x0);
         entry.force += f;
         entry.torque += lever.cross(f);
       }
@@ -103,7 +104,7 @@ class RigidBodies {
   }
 
   void place(Entry& entry, std::uint64_t step, double time) const {
-    place_rigid_particles<D>(domain_, *entry.contact, entry.start, entry.body, step, time,
+    place_rigid_particles<D>(domain_, *entry.contact, entry.start, entry.body.kinematics(), step, time,
                              "the body \"" + entry.contact->name() + "\" left the domain",
                              "Enlarge domain.box, or check the body's density and the time step.");
   }

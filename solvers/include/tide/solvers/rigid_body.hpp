@@ -44,7 +44,18 @@ class RigidBody {
   struct Point {
     Eigen::Vector3d position, velocity, acceleration;
   };
-  Point point(const Eigen::Vector3d& start) const;
+  /// The body's motion at this moment, with ω worked out once (a solve in 3D), for the many
+  /// points of its particles.
+  struct Kinematics {
+    Eigen::Vector3d start_reference, reference;
+    Eigen::Quaterniond orientation;
+    Eigen::Vector3d velocity, acceleration, angular_velocity, angular_acceleration;
+    /// r = R (x0 − o0): the lever from the reference point of the point that started at `start`.
+    Eigen::Vector3d lever(const Eigen::Vector3d& start) const { return orientation * (start - start_reference); }
+    Point point(const Eigen::Vector3d& start) const;
+  };
+  Kinematics kinematics() const;
+  Point point(const Eigen::Vector3d& start) const { return kinematics().point(start); }
 
   const MassProperties& mass_properties() const { return properties_; }
   Eigen::Vector3d centre() const { return point(properties_.centre).position; }

@@ -6,6 +6,9 @@
 
 namespace tide {
 
+/// A scene vector (scene::Vec, double) as an Eigen vector, for the rigid-solid arithmetic.
+inline Eigen::Vector3d to_eigen(const scene::Vec& v) { return {v[0], v[1], v[2]}; }
+
 /// A rigid solid's pose at one time and its rates: displaced by `displacement` from where the
 /// scene puts it and turned by `angle` about `axis` through the displaced centre, so a point that
 /// starts at x0 is at x = c + d + R(θ)(x0 − c). All in double: the motion is evaluated from the
