@@ -1,8 +1,8 @@
 #pragma once
 
-// IncompressibleSph's member definitions, instantiated once per dimension (incompressible_sph_2d.cpp,
-// incompressible_sph_3d.cpp): each dimension compiles every pass for the seven kernels, and a file per dimension lets
-// two cores share that work.
+// IncompressibleSph's member definitions, instantiated once per dimension
+// (incompressible_sph_2d.cpp, incompressible_sph_3d.cpp): a file per dimension lets two cores
+// share the compile of the passes.
 
 #include "tide/solvers/incompressible_sph.hpp"
 
@@ -16,7 +16,6 @@
 #include <string>
 #include <string_view>
 #include <utility>
-#include <variant>
 #include <vector>
 
 #include "passes/continuity.hpp"
@@ -100,9 +99,9 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   check_capabilities(scene);
   relaxation_ =
-      effective_relaxation(scheme_, jacobi_spectral_bound<D>(kernel_, static_cast<Real>(scene.particle_spacing)));
-  if (scene::fluid_material_count(scene) > 1) phases_ = setup::make_phases<D>(scene, kernel_);
-  const Real particle_mass = setup::particle_mass<D>(scene, kernel_, rest_density_);
+      effective_relaxation(scheme_, jacobi_spectral_bound<D>(kernel_.any(), static_cast<Real>(scene.particle_spacing)));
+  if (scene::fluid_material_count(scene) > 1) phases_ = setup::make_phases<D>(scene, kernel_.any());
+  const Real particle_mass = setup::particle_mass<D>(scene, kernel_.any(), rest_density_);
   fluid_ = setup::make_fluid<D>(scene, particle_mass, rest_density_, fluid_fields_, phases());
   fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
   solve_fields_ = {fluid_.add_scalar("pressure_factor"), fluid_.add_vector("predicted_velocity"),
@@ -216,9 +215,7 @@ std::vector<Stage> IncompressibleSph<D>::force_stages() {
 
 template <int D>
 void IncompressibleSph<D>::cache_gradients() {
-  std::visit(
-      [&](const auto& kernel) { interactions_.cache_gradients(kernel, std::as_const(fluid_)[fluid_fields_.position]); },
-      kernel_);
+  interactions_.cache_gradients(kernel_, std::as_const(fluid_)[fluid_fields_.position]);
   uniform_masses_ = !phases_ && passes::masses_are_uniform(std::as_const(fluid_)[fluid_fields_.mass]);
   for (std::size_t k = 0; k < interactions_.contact_count(); ++k) {
     const Contact<D>& contact = interactions_.contact(k);
@@ -228,35 +225,26 @@ void IncompressibleSph<D>::cache_gradients() {
 
 template <int D>
 void IncompressibleSph<D>::sum_density() {
-  std::visit(
-      [&](const auto& kernel) {
-        const auto nothing_more = [](std::size_t, Real) {};
-        if (phases_) {
-          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, interactions_, nothing_more);
-        } else {
-          passes::density_summation<D>(kernel, fluid_, fluid_fields_, interactions_, nothing_more);
-        }
-      },
-      kernel_);
+  const auto nothing_more = [](std::size_t, Real) {};
+  if (phases_) {
+    passes::density_summation<D, true>(kernel_, fluid_, fluid_fields_, interactions_, nothing_more);
+  } else {
+    passes::density_summation<D>(kernel_, fluid_, fluid_fields_, interactions_, nothing_more);
+  }
 }
 
 template <int D>
 void IncompressibleSph<D>::compute_pressure_factor() {
-  std::visit(
-      [&](const auto& kernel) {
-        if (phases_) {
-          passes::pressure_factor<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, interactions_);
-        } else {
-          passes::pressure_factor<D>(kernel, fluid_, fluid_fields_, solve_fields_, interactions_);
-        }
-      },
-      kernel_);
+  if (phases_) {
+    passes::pressure_factor<D, true>(kernel_, fluid_, fluid_fields_, solve_fields_, interactions_);
+  } else {
+    passes::pressure_factor<D>(kernel_, fluid_, fluid_fields_, solve_fields_, interactions_);
+  }
 }
 
 template <int D>
 void IncompressibleSph<D>::extrapolate_wall_velocity() {
-  std::visit([&](const auto& kernel) { passes::wall_states<D>(kernel, interactions_, fluid_, fluid_fields_, nullptr); },
-             kernel_);
+  passes::wall_states<D>(kernel_, interactions_, fluid_, fluid_fields_, nullptr);
 }
 
 template <int D>
@@ -270,12 +258,8 @@ void IncompressibleSph<D>::compute_non_pressure_acceleration() {
     for (const Phase& p : phases_->table) dynamic_viscosity.push_back(p.dynamic_viscosity);
     multiphase = {phase, dynamic_viscosity, setup::wall_volume<D>(interactions_, rest_density_)};
   }
-  std::visit(
-      [&](const auto& kernel) {
-        passes::fluid_acceleration<D, false>(kernel, viscosity, {}, fluid_, fluid_fields_, interactions_, gravity_, {},
-                                             phases_ ? &multiphase : nullptr);
-      },
-      kernel_);
+  passes::fluid_acceleration<D, false>(kernel_, viscosity, {}, fluid_, fluid_fields_, interactions_, gravity_, {},
+                                       phases_ ? &multiphase : nullptr);
 }
 
 template <int D>
@@ -320,15 +304,15 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
   // The error of the velocities `velocity` now holds (the fluid's after a sweep, or the predicted
   // ones): stores ρ*_i − ρ0 = ρ_i + Δt Dρ_i/Dt − ρ0 after the step (density solve), or Δt Dρ_i/Dt
   // (divergence solve), in `excess`, and its mean deviation in `report`.
-  const auto measure = [&](const auto& kernel, VectorField velocity, bool unpressed) {
+  const auto measure = [&](VectorField velocity, bool unpressed) {
     FluidFields<D> moving = fluid_fields_;
     moving.velocity = velocity;
     if (phases_) {
-      passes::continuity<D, true>(kernel, fluid_, moving, interactions_, nullptr);
+      passes::continuity<D, true>(kernel_, fluid_, moving, interactions_, nullptr);
     } else if (uniform_masses_) {
-      passes::continuity<D, false, true>(kernel, fluid_, moving, interactions_, nullptr);
+      passes::continuity<D, false, true>(kernel_, fluid_, moving, interactions_, nullptr);
     } else {
-      passes::continuity<D>(kernel, fluid_, moving, interactions_, nullptr);
+      passes::continuity<D>(kernel_, fluid_, moving, interactions_, nullptr);
     }
     for_each_particle(fluid_.size(), [&](std::size_t i) {
       excess[i] = (density_target ? density[i] - rest_density_at(i) : Real(0)) + dt * rate[i];
@@ -361,62 +345,60 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
     worst_particle_ = summary.worst;
     worst_excess_ = summary.max;
   };
-  std::visit(
-      [&](const auto& kernel) {
-        const passes::WallPressureExtrapolation<D> wall_rule{nullptr, wall_gravity, !two_sided};
-        FluidFields<D> solved = fluid_fields_;
-        solved.pressure = pressure_field;
-        while (true) {
-          passes::wall_states<D>(kernel, interactions_, fluid_, solved, &wall_rule);
-          if (phases_) {
-            passes::pressure_velocity<D, true>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, interactions_,
-                                               dt, pressure_term_);
-          } else if (uniform_masses_) {
-            passes::pressure_velocity<D, false, true>(kernel, fluid_, fluid_fields_, solve_fields_, pressure,
-                                                      interactions_, dt, pressure_term_);
-          } else {
-            passes::pressure_velocity<D>(kernel, fluid_, fluid_fields_, solve_fields_, pressure, interactions_, dt,
-                                         pressure_term_);
-          }
-          measure(kernel, fluid_fields_.velocity, false);
-          if ((report.converged && report.iterations >= min_iterations) || report.iterations >= max_iterations) break;
-          // Projected Jacobi: p stays ≥ 0, so the fluid takes no tension (Ihmsen et al. 2014, Alg. 1),
-          // unless the scene lets the pressure take both signs.
-          const Real floor = two_sided ? -std::numeric_limits<Real>::infinity() : Real(0);
-          const bool accelerate = density_target && report.iterations >= chebyshev_delay;
-          if (accelerate) weight = chebyshev_weight(report.iterations - chebyshev_delay, weight);
-          for_each_particle(fluid_.size(), [&](std::size_t i) {
-            const Real jacobi = std::max(pressure[i] + relaxation_ * factor[i] * excess[i] / (dt * dt), floor);
-            const Real before = pressure[i];
-            pressure[i] =
-                accelerate ? std::max(weight * (jacobi - before_sweep_[i]) + before_sweep_[i], floor) : jacobi;
-            before_sweep_[i] = before;
-          });
-          ++report.iterations;
-        }
-        // A warm start carries the last step's pressure over. Where the fluid needs no pressure
-        // this step, the few sweeps that then meet the threshold leave that pressure almost as it
-        // was, so over many steps it integrates the density error: a feedback without damping,
-        // measured on the Poiseuille and Couette channels (a transverse velocity growing tenfold
-        // every ~20 steps from 1e-11 m/s while the error stayed far below the threshold). So when
-        // the solve stopped at its minimum sweeps, the fluid without pressure is tried too and,
-        // if it meets the threshold, kept.
-        if (!report.converged || report.iterations > min_iterations || warm_start == 0) return;
-        const SolveReport pressed = report;
-        measure(kernel, solve_fields_.predicted_velocity, true);
-        if (!report.converged) {
-          report = pressed;
-          return;
-        }
-        report.iterations = pressed.iterations;
-        auto v = fluid_[fluid_fields_.velocity];
-        const auto predicted = std::as_const(fluid_)[solve_fields_.predicted_velocity];
-        for_each_particle(fluid_.size(), [&](std::size_t i) {
-          pressure[i] = 0;
-          v.set(i, predicted[i]);
-        });
-      },
-      kernel_);
+  // The sweeps, then (after sweeps that stopped at their minimum) the fluid without pressure.
+  [&] {
+    const passes::WallPressureExtrapolation<D> wall_rule{nullptr, wall_gravity, !two_sided};
+    FluidFields<D> solved = fluid_fields_;
+    solved.pressure = pressure_field;
+    while (true) {
+      passes::wall_states<D>(kernel_, interactions_, fluid_, solved, &wall_rule);
+      if (phases_) {
+        passes::pressure_velocity<D, true>(kernel_, fluid_, fluid_fields_, solve_fields_, pressure, interactions_, dt,
+                                           pressure_term_);
+      } else if (uniform_masses_) {
+        passes::pressure_velocity<D, false, true>(kernel_, fluid_, fluid_fields_, solve_fields_, pressure,
+                                                  interactions_, dt, pressure_term_);
+      } else {
+        passes::pressure_velocity<D>(kernel_, fluid_, fluid_fields_, solve_fields_, pressure, interactions_, dt,
+                                     pressure_term_);
+      }
+      measure(fluid_fields_.velocity, false);
+      if ((report.converged && report.iterations >= min_iterations) || report.iterations >= max_iterations) break;
+      // Projected Jacobi: p stays ≥ 0, so the fluid takes no tension (Ihmsen et al. 2014, Alg. 1),
+      // unless the scene lets the pressure take both signs.
+      const Real floor = two_sided ? -std::numeric_limits<Real>::infinity() : Real(0);
+      const bool accelerate = density_target && report.iterations >= chebyshev_delay;
+      if (accelerate) weight = chebyshev_weight(report.iterations - chebyshev_delay, weight);
+      for_each_particle(fluid_.size(), [&](std::size_t i) {
+        const Real jacobi = std::max(pressure[i] + relaxation_ * factor[i] * excess[i] / (dt * dt), floor);
+        const Real before = pressure[i];
+        pressure[i] = accelerate ? std::max(weight * (jacobi - before_sweep_[i]) + before_sweep_[i], floor) : jacobi;
+        before_sweep_[i] = before;
+      });
+      ++report.iterations;
+    }
+    // A warm start carries the last step's pressure over. Where the fluid needs no pressure
+    // this step, the few sweeps that then meet the threshold leave that pressure almost as it
+    // was, so over many steps it integrates the density error: a feedback without damping,
+    // measured on the Poiseuille and Couette channels (a transverse velocity growing tenfold
+    // every ~20 steps from 1e-11 m/s while the error stayed far below the threshold). So when
+    // the solve stopped at its minimum sweeps, the fluid without pressure is tried too and,
+    // if it meets the threshold, kept.
+    if (!report.converged || report.iterations > min_iterations || warm_start == 0) return;
+    const SolveReport pressed = report;
+    measure(solve_fields_.predicted_velocity, true);
+    if (!report.converged) {
+      report = pressed;
+      return;
+    }
+    report.iterations = pressed.iterations;
+    auto v = fluid_[fluid_fields_.velocity];
+    const auto predicted = std::as_const(fluid_)[solve_fields_.predicted_velocity];
+    for_each_particle(fluid_.size(), [&](std::size_t i) {
+      pressure[i] = 0;
+      v.set(i, predicted[i]);
+    });
+  }();
   // A closed or periodic domain leaves the pressure's level free: the sweeps solve for ρ* and a
   // constant pressure moves no particle. With one fluid the sweeps leave the mean pressure where
   // the warm start put it (the mean of ρ* − ρ0 is removed and α_i is nearly uniform, so the
@@ -459,12 +441,8 @@ void IncompressibleSph<D>::drift(Real dt) {
 
 template <int D>
 void IncompressibleSph<D>::shift_particles(Real dt) {
-  std::visit(
-      [&](const auto& kernel) {
-        passes::shift_particles<D>(kernel, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_,
-                                   dt, fluid_, fluid_fields_, interactions_);
-      },
-      kernel_);
+  passes::shift_particles<D>(kernel_, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_, dt,
+                             fluid_, fluid_fields_, interactions_);
 }
 
 template <int D>

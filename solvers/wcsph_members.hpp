@@ -1,8 +1,7 @@
 #pragma once
 
-// Wcsph's member definitions, instantiated once per dimension (wcsph_2d.cpp, wcsph_3d.cpp): each
-// dimension compiles every pass for the seven kernels, and a file per dimension lets two cores
-// share that work.
+// Wcsph's member definitions, instantiated once per dimension (wcsph_2d.cpp, wcsph_3d.cpp): a
+// file per dimension lets two cores share the compile of the passes.
 
 #include "tide/solvers/wcsph.hpp"
 
@@ -14,7 +13,6 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
-#include <variant>
 
 #include "passes/body_force.hpp"
 #include "passes/continuity.hpp"
@@ -51,11 +49,11 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   if (!(eos_.sound_speed() > 0))
     throw std::invalid_argument(scene.source + ": the material needs a positive sound_speed or max_speed");
   check_capabilities(scene);
-  if (scene::fluid_material_count(scene) > 1) phases_ = setup::make_phases<D>(scene, kernel_);
-  const Real particle_mass = setup::particle_mass<D>(scene, kernel_, eos_.rest_density());
+  if (scene::fluid_material_count(scene) > 1) phases_ = setup::make_phases<D>(scene, kernel_.any());
+  const Real particle_mass = setup::particle_mass<D>(scene, kernel_.any(), eos_.rest_density());
   fluid_ = setup::make_fluid<D>(scene, particle_mass, eos_.rest_density(), fluid_fields_, phases());
-  setup::SchemeSurfaceTension tension = setup::make_surface_tension<D>(scene, kernel_, phases(), eos_.rest_density(),
-                                                                       particle_mass, fluid_, fluid_fields_);
+  setup::SchemeSurfaceTension tension = setup::make_surface_tension<D>(
+      scene, kernel_.any(), phases(), eos_.rest_density(), particle_mass, fluid_, fluid_fields_);
   tension_ = std::move(tension.settings);
   if (scene.solver.density == scene::DensityMethod::continuity) {
     fluid_fields_.density_rate = fluid_.add_scalar("density_rate");
@@ -211,15 +209,11 @@ void Wcsph<D>::sum_density() {
                                                       : std::span<const Index>{}](std::size_t i, Real rho) {
     pressure[i] = pressure_at(phases_->table[phase[i]].eos, rho);
   };
-  std::visit(
-      [&](const auto& kernel) {
-        if (phases_) {
-          passes::density_summation<D, true>(kernel, fluid_, fluid_fields_, interactions_, set_phase_pressure);
-        } else {
-          passes::density_summation<D>(kernel, fluid_, fluid_fields_, interactions_, set_pressure);
-        }
-      },
-      kernel_);
+  if (phases_) {
+    passes::density_summation<D, true>(kernel_, fluid_, fluid_fields_, interactions_, set_phase_pressure);
+  } else {
+    passes::density_summation<D>(kernel_, fluid_, fluid_fields_, interactions_, set_pressure);
+  }
 }
 
 template <int D>
@@ -234,19 +228,15 @@ void Wcsph<D>::extrapolate_wall_state(const Vector<D>& gravity) {
   // Several fluids: the walls keep ρ0 (their volume enters the momentum pass, not their density).
   const passes::WallPressureExtrapolation<D> wall_pressure{phases_ ? nullptr : &eos_, gravity,
                                                            scene_.solver.clamp_negative_pressure};
-  std::visit(
-      [&](const auto& kernel) { passes::wall_states<D>(kernel, interactions_, fluid_, fluid_fields_, &wall_pressure); },
-      kernel_);
+  passes::wall_states<D>(kernel_, interactions_, fluid_, fluid_fields_, &wall_pressure);
 }
 
 template <int D>
 void Wcsph<D>::compute_acceleration(const Vector<D>& gravity) {
   const passes::ViscositySettings viscosity =
       passes::viscosity_settings(scene_, eos_.sound_speed(), kinematic_viscosity_, smoothing_length_);
-  const passes::ArtificialStressSettings stress{
-      static_cast<Real>(scene_.solver.artificial_stress),
-      std::visit([&](const auto& kernel) { return 1 / kernel.value(static_cast<Real>(scene_.particle_spacing)); },
-                 kernel_)};
+  const passes::ArtificialStressSettings stress{static_cast<Real>(scene_.solver.artificial_stress),
+                                                1 / kernel_.value(static_cast<Real>(scene_.particle_spacing))};
   std::vector<Real> dynamic_viscosity;
   passes::MultiphaseTerms multiphase;
   if (phases_) {
@@ -254,28 +244,19 @@ void Wcsph<D>::compute_acceleration(const Vector<D>& gravity) {
     multiphase = {std::as_const(fluid_)[fluid_fields_.phase], dynamic_viscosity,
                   setup::wall_volume<D>(interactions_, eos_.rest_density())};
   }
-  std::visit(
-      [&](const auto& kernel) {
-        const std::span<Real> scratch =
-            phases_ ? std::span<Real>{}
-                    : interactions_.pass_scratch(fluid_.size() + interactions_.contact_particle_count());
-        passes::fluid_acceleration<D>(kernel, viscosity, stress, fluid_, fluid_fields_, interactions_, gravity, scratch,
-                                      phases_ ? &multiphase : nullptr);
-      },
-      kernel_);
+  const std::span<Real> scratch =
+      phases_ ? std::span<Real>{} : interactions_.pass_scratch(fluid_.size() + interactions_.contact_particle_count());
+  passes::fluid_acceleration<D>(kernel_, viscosity, stress, fluid_, fluid_fields_, interactions_, gravity, scratch,
+                                phases_ ? &multiphase : nullptr);
 }
 
 template <int D>
 void Wcsph<D>::compute_body_forces() {
   const passes::ViscositySettings viscosity =
       passes::viscosity_settings(scene_, eos_.sound_speed(), kinematic_viscosity_, smoothing_length_);
-  std::visit(
-      [&](const auto& kernel) {
-        bodies_.for_each_force_field([&](const Contact<D>& body, VectorView<D> force) {
-          passes::body_force<D>(kernel, viscosity, body, fluid_, fluid_fields_, force);
-        });
-      },
-      kernel_);
+  bodies_.for_each_force_field([&](const Contact<D>& body, VectorView<D> force) {
+    passes::body_force<D>(kernel_, viscosity, body, fluid_, fluid_fields_, force);
+  });
   bodies_.sum_forces();
 }
 
@@ -294,12 +275,8 @@ Real Wcsph<D>::wall_strength(Index a) const {
 template <int D>
 void Wcsph<D>::add_surface_tension() {
   const std::span<const Index> phase = phases_ ? std::as_const(fluid_)[fluid_fields_.phase] : std::span<const Index>{};
-  std::visit(
-      [&](const auto& kernel) {
-        passes::surface_tension<D>(kernel, scene_.solver.surface_tension.model, *tension_, fluid_, fluid_fields_, phase,
-                                   interactions_);
-      },
-      kernel_);
+  passes::surface_tension<D>(kernel_, scene_.solver.surface_tension.model, *tension_, fluid_, fluid_fields_, phase,
+                             interactions_);
 }
 
 template <int D>
@@ -314,11 +291,7 @@ template <int D>
 void Wcsph<D>::compute_density_rate(const Vector<D>& gravity) {
   const passes::DensityDiffusion<D> diffusion{eos_, gravity, static_cast<Real>(scene_.solver.delta_sph),
                                               eos_.sound_speed()};
-  std::visit(
-      [&](const auto& kernel) {
-        passes::continuity<D>(kernel, fluid_, fluid_fields_, interactions_, diffusion.delta > 0 ? &diffusion : nullptr);
-      },
-      kernel_);
+  passes::continuity<D>(kernel_, fluid_, fluid_fields_, interactions_, diffusion.delta > 0 ? &diffusion : nullptr);
 }
 
 template <int D>
@@ -372,12 +345,8 @@ bool Wcsph<D>::injects_phase() const {
 
 template <int D>
 void Wcsph<D>::shift_particles(Real dt) {
-  std::visit(
-      [&](const auto& kernel) {
-        passes::shift_particles<D>(kernel, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_,
-                                   dt, fluid_, fluid_fields_, interactions_);
-      },
-      kernel_);
+  passes::shift_particles<D>(kernel_, static_cast<Real>(scene_.particle_spacing), smoothing_length_, max_speed_, dt,
+                             fluid_, fluid_fields_, interactions_);
 }
 
 template <int D>

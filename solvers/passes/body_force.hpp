@@ -9,6 +9,7 @@
 
 #include "momentum.hpp"
 #include "neighbor_walk.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
@@ -19,8 +20,8 @@ namespace tide::passes {
 /// no-slip body, the viscous term of detail::viscous_coefficient with b's mirrored velocity. A
 /// gather over b's fluid neighbours (∇W_jb = −∇W_bj), stored in `force`. The one-fluid,
 /// no-artificial-stress form of the momentum pass: the scene checks refuse bodies with the others.
-template <int D, class Kernel>
-void body_force(const Kernel& kernel, const ViscositySettings& settings, const Contact<D>& body,
+template <int D>
+void body_force(const RuntimeKernel<D>& kernel, const ViscositySettings& settings, const Contact<D>& body,
                 const ParticleSet<D>& fluid, const FluidFields<D>& f, VectorView<D> force) {
   const auto x = fluid[f.position];
   const auto v = fluid[f.velocity];

@@ -10,6 +10,7 @@
 
 #include "neighbor_masses.hpp"
 #include "neighbor_walk.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/equation_of_state.hpp"
 #include "tide/solvers/interactions.hpp"
@@ -37,8 +38,8 @@ struct DensityDiffusion {
 /// that density, Dρ_i/dt = m_i Σ_j v_ij·∇W_ij, without diffusion. With `UniformMasses` (every
 /// fluid particle has one mass and every particle of a contact one: masses_are_uniform), the
 /// pair loops without diffusion read m_j as such (NeighborMasses), with the same results.
-template <int D, bool NumberDensity = false, bool UniformMasses = false, class Kernel>
-void continuity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
+template <int D, bool NumberDensity = false, bool UniformMasses = false>
+void continuity(const RuntimeKernel<D>& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                 const Interactions<D>& interactions, const DensityDiffusion<D>* diffusion) {
   const auto x = std::as_const(fluid)[f.position];
   const auto v = std::as_const(fluid)[f.velocity];

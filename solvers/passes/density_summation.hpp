@@ -3,11 +3,12 @@
 // Density by kernel summation over fluid and contact particles, fused with what a scheme derives
 // from it per particle (WCSPH: the equation of state).
 
-#include <cmath>
 #include <span>
 #include <vector>
 
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/parallel.hpp"
+#include "tide/neighbor/neighbor_run.hpp"
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
@@ -21,8 +22,8 @@ namespace tide::passes {
 /// update that left the listing to it, this pass also lists the neighbours; that walk visits the
 /// fluid and each contact one after the other, so the sum so far is kept in density[i] between
 /// them, and the last contact's visit finishes it.
-template <int D, bool NumberDensity = false, class Kernel, class ThenEach>
-void density_summation(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
+template <int D, bool NumberDensity = false, class ThenEach>
+void density_summation(const RuntimeKernel<D>& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                        Interactions<D>& interactions, ThenEach&& then_each) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -30,10 +31,11 @@ void density_summation(const Kernel& kernel, ParticleSet<D>& fluid, const FluidF
   const std::size_t contact_count = interactions.contact_count();
   const auto add_sum = [&](Real sum, const std::span<const Real> neighbor_mass, const auto& runs) {
     runs([&](const NeighborRun<D>& run) {
+      const auto w = kernel_values(kernel, run);
       if constexpr (NumberDensity) {
-        accumulate(run, sum, [&](int k) { return kernel.value(std::sqrt(run.r2[k])); });
+        accumulate(run, sum, [&](int k) { return w[k]; });
       } else {
-        accumulate(run, sum, [&](int k) { return neighbor_mass[run.index[k]] * kernel.value(std::sqrt(run.r2[k])); });
+        accumulate(run, sum, [&](int k) { return neighbor_mass[run.index[k]] * w[k]; });
       }
     });
     return sum;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "neighbor_walk.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/solvers/interactions.hpp"
@@ -83,11 +84,11 @@ inline Real artificial_stress_share(Real epsilon, Real p_over_rho2) {
   return p_over_rho2 < 0 ? -epsilon * p_over_rho2 : Real(0);
 }
 
-// (W(r)/W(Δx))^4: the artificial stress acts only between particles closer than about the
-// initial spacing, and grows fast as they approach (Monaghan 2000, n = 4).
-template <class Kernel>
-inline Real artificial_stress_weight(const Kernel& kernel, const ArtificialStressSettings& s, Real r) {
-  const Real f = kernel.value(r) * s.inverse_lattice_kernel;
+// (W_ij/W(Δx))^4 from the pair's kernel value W_ij: the artificial stress acts only between
+// particles closer than about the initial spacing, and grows fast as they approach (Monaghan
+// 2000, n = 4).
+inline Real artificial_stress_weight(const ArtificialStressSettings& s, Real w_ij) {
+  const Real f = w_ij * s.inverse_lattice_kernel;
   const Real f2 = f * f;
   return f2 * f2;
 }
@@ -131,9 +132,8 @@ struct MultiphaseTerms {
 /// single-phase form. With one fluid and `WithPressure`, `scratch` (at least one entry per fluid
 /// and contact particle) takes each particle's p/ρ², computed once per particle rather than once
 /// per pair (the same numbers).
-template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, bool Multiphase = false,
-          class Kernel>
-void momentum(const Kernel& kernel, const ViscositySettings& settings,
+template <int D, scene::ViscosityModel Model, bool WithPressure, bool ArtificialStress, bool Multiphase = false>
+void momentum(const RuntimeKernel<D>& kernel, const ViscositySettings& settings,
               [[maybe_unused]] const ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
               const Interactions<D>& interactions, const Vector<D>& gravity, [[maybe_unused]] std::span<Real> scratch,
               [[maybe_unused]] const MultiphaseTerms* phases = nullptr) {
@@ -187,12 +187,13 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
         const Real p_over_rho2_i = pressure[i] / (rho_i * rho_i);
         [[maybe_unused]] Real stress_i = 0;
         if constexpr (ArtificialStress) stress_i = detail::artificial_stress_share(stress.epsilon, p_over_rho2_i);
-        // The pressure term of one pair, with the artificial stress when it is compiled in.
-        const auto pressure_term = [&](Real p_over_rho2_j, Real r) {
+        // The pressure term of one pair, with the artificial stress when it is compiled in (w_ij:
+        // the pair's kernel value, read only then).
+        const auto pressure_term = [&](Real p_over_rho2_j, [[maybe_unused]] Real w_ij) {
           Real term = p_over_rho2_i + p_over_rho2_j;
           if constexpr (ArtificialStress) {
             const Real stress_j = detail::artificial_stress_share(stress.epsilon, p_over_rho2_j);
-            term += (stress_i + stress_j) * detail::artificial_stress_weight(kernel, stress, r);
+            term += (stress_i + stress_j) * detail::artificial_stress_weight(stress, w_ij);
           }
           return term;
         };
@@ -252,14 +253,16 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
                                    const ConstVectorView<D>& velocities) {
             constexpr bool viscous_run = decltype(viscous)::value;
             std::array<std::array<Real, NeighborRun<D>::capacity>, D> pressure_terms, viscous_terms;
+            // The kernel values the artificial stress weighs with, for the whole run in one call.
+            std::array<Real, ArtificialStress ? NeighborRun<D>::capacity : 1> w{};
+            if constexpr (ArtificialStress) kernel.values(run.r2.data(), run.count, w.data());
             with_gradients(kernel, run, [&](const auto& gradient) {
               for (int k = 0; k < run.count; ++k) {
                 const Index j = run.index[k];
-                const Real r = std::sqrt(run.r2[k]);
                 const Real rho_j = densities[j];
                 const std::array<Real, D> grad_w = gradient(k);
                 if constexpr (WithPressure) {
-                  const Real scale = masses[j] * pressure_term(p_over_rho2_j[j], r);
+                  const Real scale = masses[j] * pressure_term(p_over_rho2_j[j], w[ArtificialStress ? k : 0]);
                   for (int d = 0; d < D; ++d) pressure_terms[d][k] = scale * grad_w[d];
                 }
                 if constexpr (viscous_run) {
@@ -308,10 +311,11 @@ void momentum(const Kernel& kernel, const ViscositySettings& settings,
 /// for one fluid or several (`phases` set), picked once per pass outside the particle loop: a
 /// scene without artificial stress or a second fluid runs a pass without them. `scratch` as for
 /// momentum().
-template <int D, bool WithPressure = true, class Kernel>
-void fluid_acceleration(const Kernel& kernel, const ViscositySettings& settings, const ArtificialStressSettings& stress,
-                        ParticleSet<D>& fluid, const FluidFields<D>& f, const Interactions<D>& interactions,
-                        const Vector<D>& gravity, std::span<Real> scratch, const MultiphaseTerms* phases = nullptr) {
+template <int D, bool WithPressure = true>
+void fluid_acceleration(const RuntimeKernel<D>& kernel, const ViscositySettings& settings,
+                        const ArtificialStressSettings& stress, ParticleSet<D>& fluid, const FluidFields<D>& f,
+                        const Interactions<D>& interactions, const Vector<D>& gravity, std::span<Real> scratch,
+                        const MultiphaseTerms* phases = nullptr) {
   const auto run = [&]<scene::ViscosityModel Model, bool Stress>() {
     momentum<D, Model, WithPressure, Stress>(kernel, settings, stress, fluid, f, interactions, gravity, scratch);
   };

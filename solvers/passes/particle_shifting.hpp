@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "neighbor_walk.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
@@ -59,8 +60,8 @@ std::vector<std::pair<std::span<const Real>, std::span<const Real>>> contact_vol
 /// The divergence of position ∇·r_i = −Σ_j V_j x_ij·∇W_ij over fluid and contact neighbours
 /// (V_j = m_j/ρ_j): the dimension inside the fluid, smaller where the support is partly empty,
 /// which marks the free surface (Lee et al. 2008; Lind et al. 2012 take ∇·r < 1.5 in 2D).
-template <int D, class Kernel>
-void position_divergence(const Kernel& kernel, const ParticleSet<D>& fluid, const FluidFields<D>& f,
+template <int D>
+void position_divergence(const RuntimeKernel<D>& kernel, const ParticleSet<D>& fluid, const FluidFields<D>& f,
                          const Interactions<D>& interactions, std::span<Real> divergence) {
   const auto mass = fluid[f.mass];
   const auto density = fluid[f.density];
@@ -91,8 +92,8 @@ void position_divergence(const Kernel& kernel, const ParticleSet<D>& fluid, cons
 /// the threshold, itself included) within its support keeps only the tangential part of its shift,
 /// (I − n nᵀ) δr, with n = −Σ V_j ∇W_ij / |…| (Lind et al. 2012, Sec. 3.3); a splash particle is
 /// not shifted.
-template <int D, class Kernel>
-void particle_shifting(const Kernel& kernel, const ShiftingSettings& settings, const ParticleSet<D>& fluid,
+template <int D>
+void particle_shifting(const RuntimeKernel<D>& kernel, const ShiftingSettings& settings, const ParticleSet<D>& fluid,
                        const FluidFields<D>& f, const Interactions<D>& interactions, std::span<const Real> divergence,
                        VectorView<D> shift) {
   constexpr Real repulsion = Real(0.2);  // R
@@ -134,8 +135,8 @@ void particle_shifting(const Kernel& kernel, const ShiftingSettings& settings, c
 /// incompressible schemes, CFL h / U, would give 4 CFL h² and overshoot the uniform distribution.
 /// The anti-pairing term is scaled by the kernel at one particle spacing, and the free-surface
 /// thresholds are those of Lind et al. 2012 (∇·r < D − 0.5; splash below D/2).
-template <int D, class Kernel>
-void shift_particles(const Kernel& kernel, Real spacing, Real smoothing_length, Real max_speed, Real dt,
+template <int D>
+void shift_particles(const RuntimeKernel<D>& kernel, Real spacing, Real smoothing_length, Real max_speed, Real dt,
                      ParticleSet<D>& fluid, const FluidFields<D>& f, const Interactions<D>& interactions) {
   const Real diffusion = std::min(4 * smoothing_length * max_speed * dt, smoothing_length * smoothing_length / 2);
   const ShiftingSettings settings{diffusion, kernel.value(spacing), Real(D) - Real(0.5), Real(D) / 2};

@@ -20,6 +20,7 @@
 
 #include "neighbor_masses.hpp"
 #include "neighbor_walk.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/incompressible_sph.hpp"
 #include "tide/solvers/interactions.hpp"
@@ -34,8 +35,8 @@ namespace tide::passes {
 /// With `NumberDensity` (several fluids: ρ_i = m_i Σ_j W_ij, the pressure force of Hu & Adams
 /// 2006 in pressure_velocity), the same derivative of that density,
 /// α_i = ρ_i² / (m_i² |Σ_j ∇W_ij + Σ_b ∇W_ib|² + m_i³ Σ_j |∇W_ij|² / m_j); for one mass both agree.
-template <int D, bool NumberDensity = false, class Kernel>
-void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
+template <int D, bool NumberDensity = false>
+void pressure_factor(const RuntimeKernel<D>& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                      const PressureSolveFields<D>& s, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -104,8 +105,8 @@ void pressure_factor(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFie
 /// DFSPH run, docs/performance.md); the sums are bitwise those of the division per pair. With
 /// `UniformMasses` (one fluid mass, one wall mass: masses_are_uniform), m_j is read as such
 /// (NeighborMasses), with the same results.
-template <int D, bool NumberDensity = false, bool UniformMasses = false, class Kernel>
-void pressure_velocity(const Kernel& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
+template <int D, bool NumberDensity = false, bool UniformMasses = false>
+void pressure_velocity(const RuntimeKernel<D>& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
                        const PressureSolveFields<D>& s, std::span<const Real> pressure,
                        const Interactions<D>& interactions, Real dt, std::span<Real> pressure_term) {
   const auto x = std::as_const(fluid)[f.position];

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "neighbor_walk.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/solvers/interactions.hpp"
@@ -62,8 +63,8 @@ inline Real akinci_adhesion(Real r, Real support, Real scale) {
 /// Colour gradient n_i = Σ_j V_j (c_j − c_i) ∇W_ij over fluid neighbours (Morris 2000, eq. 18,
 /// the SPH form of Brackbill et al. 1992), c = 1 in the colour phase and 0 elsewhere. Walls
 /// are left out: they carry no colour, so they neither add to nor bend the interface normal.
-template <int D, class Kernel>
-void colour_gradient(const Kernel& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
+template <int D>
+void colour_gradient(const RuntimeKernel<D>& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
                      const FluidFields<D>& f, std::span<const Index> phase, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -90,8 +91,8 @@ void colour_gradient(const Kernel& kernel, const SurfaceTensionSettings& s, Part
 /// undercounts (κ came out 17% high for R = 8 Δx). With T_t = Σ_j V_j |W'_ij| (r_ij² −
 /// (x_ij·n̂_i)²) / r_ij, ∇·n̂_i = (D − 1) Σ_j V_j (n̂_j − n̂_i)·∇W_ij / T_t, which in a full support
 /// is the plain SPH divergence (T_t = D − 1).
-template <int D, class Kernel>
-void continuum_surface_force(const Kernel& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
+template <int D>
+void continuum_surface_force(const RuntimeKernel<D>& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
                              const FluidFields<D>& f, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -127,8 +128,8 @@ void continuum_surface_force(const Kernel& kernel, const SurfaceTensionSettings&
 
 /// Surface normal of Akinci et al. 2013 (eq. 5): n_i = R Σ_j V_j ∇W_ij over neighbours of i's
 /// own phase; large only at the phase's surface.
-template <int D, class Kernel>
-void akinci_normal(const Kernel& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
+template <int D>
+void akinci_normal(const RuntimeKernel<D>& kernel, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
                    const FluidFields<D>& f, std::span<const Index> phase, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -150,8 +151,8 @@ void akinci_normal(const Kernel& kernel, const SurfaceTensionSettings& s, Partic
 /// K_ij = 2 ρ0 / (ρ_i + ρ_j) (eq. 6), which strengthens the pull on the thinned-out surface; and
 /// adhesion to wall contacts −β Ψ_b A(r_ib) x̂_ib (eq. 7) with Ψ_b = ρ0 V_b (Akinci et al. 2012).
 /// All per unit mass of i.
-template <int D, class Kernel>
-void akinci_surface_force(const Kernel&, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
+template <int D>
+void akinci_surface_force(const RuntimeKernel<D>&, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
                           const FluidFields<D>& f, std::span<const Index> phase, const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
   const auto mass = std::as_const(fluid)[f.mass];
@@ -190,8 +191,8 @@ void akinci_surface_force(const Kernel&, const SurfaceTensionSettings& s, Partic
 /// x̂_ij for r ≤ R, repulsive below R/3 and cohesive beyond, with a strength s_ab for each pair of
 /// phases and s_aw against the particles of wall contacts; a_i = Σ F_ij / m_i. How the strengths follow from σ
 /// and the contact angle: pairwise_strengths (surface_tension_setup.cpp).
-template <int D, class Kernel>
-void pairwise_surface_force(const Kernel&, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
+template <int D>
+void pairwise_surface_force(const RuntimeKernel<D>&, const SurfaceTensionSettings& s, ParticleSet<D>& fluid,
                             const FluidFields<D>& f, std::span<const Index> phase,
                             const Interactions<D>& interactions) {
   const auto x = std::as_const(fluid)[f.position];
@@ -238,8 +239,8 @@ inline std::vector<std::string_view> surface_tension_passes(scene::SurfaceTensio
 }
 
 /// Adds the tension of `model` to the acceleration in f (nothing for SurfaceTensionModel::none).
-template <int D, class Kernel>
-void surface_tension(const Kernel& kernel, scene::SurfaceTensionModel model, const SurfaceTensionSettings& s,
+template <int D>
+void surface_tension(const RuntimeKernel<D>& kernel, scene::SurfaceTensionModel model, const SurfaceTensionSettings& s,
                      ParticleSet<D>& fluid, const FluidFields<D>& f, std::span<const Index> phase,
                      const Interactions<D>& interactions) {
   switch (model) {

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "neighbor_walk.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/equation_of_state.hpp"
 #include "tide/solvers/interactions.hpp"
@@ -58,9 +59,9 @@ struct WallStateOutput {
 /// too: a wall particle beside the free surface can extrapolate to p < 0. Without
 /// `pressure_rule`, the velocity only (p and ρ of the walls are left as they are); the velocity
 /// only where the walls have that field (no-slip walls). For one wall contact.
-template <int D, class Kernel>
-void wall_state(const Kernel& kernel, Contact<D>& contact, const ParticleSet<D>& fluid, const FluidFields<D>& f,
-                const WallPressureExtrapolation<D>* pressure_rule) {
+template <int D>
+void wall_state(const RuntimeKernel<D>& kernel, Contact<D>& contact, const ParticleSet<D>& fluid,
+                const FluidFields<D>& f, const WallPressureExtrapolation<D>* pressure_rule) {
   const WallFields<D>& w = contact.fields();
   ParticleSet<D>& particles = contact.particles();
   const auto x = fluid[f.position];
@@ -118,8 +119,8 @@ void wall_state(const Kernel& kernel, Contact<D>& contact, const ParticleSet<D>&
 
 /// wall_state for every contact of `interactions` that is a wall, but (without `pressure_rule`,
 /// the velocity only) not for the walls without a velocity, which it would not change.
-template <int D, class Kernel>
-void wall_states(const Kernel& kernel, Interactions<D>& interactions, const ParticleSet<D>& fluid,
+template <int D>
+void wall_states(const RuntimeKernel<D>& kernel, Interactions<D>& interactions, const ParticleSet<D>& fluid,
                  const FluidFields<D>& f, const WallPressureExtrapolation<D>* pressure_rule) {
   for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
     Contact<D>& contact = interactions.contact(k);

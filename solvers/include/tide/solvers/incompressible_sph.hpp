@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/solvers/incompressible_scheme.hpp"
@@ -56,7 +57,7 @@ class IncompressibleSph final : public Simulation<D> {
   const ParticleSet<D>& fluid() const override { return fluid_; }
   const FluidFields<D>& fluid_fields() const override { return fluid_fields_; }
   const Interactions<D>& interactions() const override { return interactions_; }
-  const AnyKernel<D>& kernel() const override { return kernel_; }
+  const AnyKernel<D>& kernel() const override { return kernel_.any(); }
   Vector<D> gravity() const override { return gravity_; }
   Real rest_density() const override { return rest_density_; }
   const PressureSolveFields<D>& solve_fields() const { return solve_fields_; }
@@ -99,7 +100,7 @@ class IncompressibleSph final : public Simulation<D> {
   IncompressibleScheme scheme_;
   Real relaxation_ = 1;  // ω of the Jacobi sweeps for this kernel (effective_relaxation)
   Real smoothing_length_;
-  AnyKernel<D> kernel_;
+  RuntimeKernel<D> kernel_;
   Real rest_density_;
   Real reference_sound_speed_;  // c0 of the material: velocity scale of the artificial viscosity and speed bound
   Real kinematic_viscosity_;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/memory_usage.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/core/scratch_arena.hpp"
@@ -139,12 +140,13 @@ class Interactions {
   /// Caches `kernel`'s gradient ∇W of every fluid–fluid and fluid → contact pair at the
   /// positions of the last update (NeighborList::cache_gradients), for the runs walked until the
   /// next update, which drops them; passes that take those runs must use the same kernel.
-  template <class Kernel>
-  void cache_gradients(const Kernel& kernel, const ConstVectorView<D>& fluid_x) {
-    const auto derivative_over_r = [&](Real r) { return kernel.derivative_over_r(r); };
-    fluid_list_.cache_gradients(fluid_x, fluid_x, derivative_over_r);
+  void cache_gradients(const RuntimeKernel<D>& kernel, const ConstVectorView<D>& fluid_x) {
+    const auto derivatives_over_r = [&](const Real* r2, int count, Real* f) {
+      kernel.derivatives_over_r(r2, count, f);
+    };
+    fluid_list_.cache_gradients(fluid_x, fluid_x, derivatives_over_r);
     for (auto& contact : contacts_)
-      contact->fluid_to_contact_list_.cache_gradients(fluid_x, contact->positions(), derivative_over_r);
+      contact->fluid_to_contact_list_.cache_gradients(fluid_x, contact->positions(), derivatives_over_r);
   }
 
   /// `count` Reals of the update's sort and reorder arena, which no update needs between two

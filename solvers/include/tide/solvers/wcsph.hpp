@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tide/core/kernels/kernel.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
@@ -55,7 +56,7 @@ class Wcsph final : public Simulation<D> {
   const EquationOfState& equation_of_state() const { return eos_; }
   /// Gravity now: the scene's, or less while it is being raised (solver.gravity_ramp_time).
   Vector<D> gravity() const override;
-  const AnyKernel<D>& kernel() const override { return kernel_; }
+  const AnyKernel<D>& kernel() const override { return kernel_.any(); }
   Real rest_density() const override { return eos_.rest_density(); }
   Real smoothing_length() const override { return smoothing_length_; }
   Real max_speed() const override { return max_speed_; }
@@ -117,7 +118,7 @@ class Wcsph final : public Simulation<D> {
 
   scene::Scene scene_;
   Real smoothing_length_;
-  AnyKernel<D> kernel_;
+  RuntimeKernel<D> kernel_;
   EquationOfState eos_;
   Real kinematic_viscosity_;
   std::optional<Phases> phases_;

@@ -71,8 +71,8 @@ constexpr Real kernel_support_factor(KernelType type) {
   throw std::invalid_argument("kernel_support_factor: not a KernelType value");
 }
 
-/// Any kernel, chosen at run time. A solver makes it once and calls std::visit outside its hot
-/// loop, so the loop itself is compiled for one concrete kernel with no per-pair dispatch.
+/// Any kernel, chosen at run time: the scene set-up visits it for one-off sums; the passes take it
+/// wrapped in RuntimeKernel (runtime_kernel.hpp), which evaluates whole runs of pairs per call.
 /// The alternatives are in KernelType order: index() == static_cast<std::size_t>(type).
 template <int D>
 using AnyKernel = std::variant<CubicSplineKernel<D>, WendlandC2Kernel<D>, WendlandC4Kernel<D>, QuinticSplineKernel<D>,
