@@ -35,26 +35,34 @@ void body_force(const RuntimeKernel<D>& kernel, const ViscositySettings& setting
   const auto body_pressure = set[w.pressure];
   const ConstVectorView<D> body_velocity = body.viscous() ? set[*w.velocity] : ConstVectorView<D>{};
   const auto run = [&]<scene::ViscosityModel Model, bool Viscous>() {
-    for_each_contact_particle<D>(body, x, VectorOutput<D>{force}, [&](std::size_t b, const auto& fluid_pairs) {
-      const Real m_b = body_mass[b];
-      const Real rho_b = body_density[b];
-      const Real p_over_rho2_b = body_pressure[b] / (rho_b * rho_b);
-      Vector<D> total = Vector<D>::Zero();
-      fluid_pairs([&](Index j, const Vector<D>& x_bj, Real r2) {
-        const Real rho_j = density[j];
-        const Vector<D> x_jb = -x_bj;
-        const Vector<D> grad_w = kernel.derivative_over_r(std::sqrt(r2)) * x_jb;
-        Vector<D> a_jb = -(m_b * (pressure[j] / (rho_j * rho_j) + p_over_rho2_b)) * grad_w;
-        if constexpr (Viscous) {
-          const Vector<D> v_jb = v[j] - body_velocity[b];
-          const Real coefficient =
-              detail::viscous_coefficient<Model>(settings, m_b, rho_j, rho_b, v_jb.dot(x_jb), x_jb.dot(grad_w), r2);
-          a_jb += coefficient * (Model == scene::ViscosityModel::artificial ? grad_w : v_jb);
-        }
-        total -= mass[j] * a_jb;
-      });
-      return total;
-    });
+    for_each_contact_particle<D>(
+        body, x, VectorOutput<D>{force}, [&](std::size_t b, const FluidNeighborsOf<D>& fluid_neighbors) {
+          const Real m_b = body_mass[b];
+          const Real rho_b = body_density[b];
+          const Real p_over_rho2_b = body_pressure[b] / (rho_b * rho_b);
+          Vector<D> total = Vector<D>::Zero();
+          fluid_neighbors.runs([&](const NeighborRun<D>& run) {
+            std::array<Real, NeighborRun<D>::capacity> factors;
+            kernel.derivatives_over_r(run.r2.data(), run.count, factors.data());
+            for (int k = 0; k < run.count; ++k) {
+              const Index j = run.index[k];
+              const Real r2 = run.r2[k];
+              const Real rho_j = density[j];
+              Vector<D> x_jb;
+              for (int d = 0; d < D; ++d) x_jb[d] = -run.x_ij[d][k];
+              const Vector<D> grad_w = factors[k] * x_jb;
+              Vector<D> a_jb = -(m_b * (pressure[j] / (rho_j * rho_j) + p_over_rho2_b)) * grad_w;
+              if constexpr (Viscous) {
+                const Vector<D> v_jb = v[j] - body_velocity[b];
+                const Real coefficient = detail::viscous_coefficient<Model>(settings, m_b, rho_j, rho_b, v_jb.dot(x_jb),
+                                                                            x_jb.dot(grad_w), r2);
+                a_jb += coefficient * (Model == scene::ViscosityModel::artificial ? grad_w : v_jb);
+              }
+              total -= mass[j] * a_jb;
+            }
+          });
+          return total;
+        });
   };
   const bool artificial = settings.model == scene::ViscosityModel::artificial;
   if (!body.viscous()) {

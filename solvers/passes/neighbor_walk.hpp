@@ -97,16 +97,39 @@ void for_each_fluid_particle(const Interactions<D>& interactions, const ConstVec
                     [&](std::size_t i) { output.set(i, pass(i, FluidNeighbors<D>(interactions, i, fluid_x))); });
 }
 
-/// For every particle b of `contact`, output.set(b, pass(b, fluid_pairs)), where fluid_pairs(f)
-/// calls f(j, x_bj, r²) for every fluid neighbour j of b: the passes that give a contact's
-/// particles a state from the fluid beside them (passes/wall_state.hpp).
+/// Contact particle b's fluid neighbours.
+template <int D>
+class FluidNeighborsOf {
+ public:
+  FluidNeighborsOf(const Contact<D>& contact, std::size_t b, const ConstVectorView<D>& fluid_x)
+      : contact_(contact), b_(b), fluid_x_(fluid_x) {}
+
+  /// f(j, x_bj, r²) for every fluid neighbour j.
+  template <class F>
+  void pairs(F&& f) const {
+    contact_.for_each_fluid_neighbor_of(b_, fluid_x_, f);
+  }
+  /// f(run) for runs of fluid neighbours (NeighborRun), in the order of pairs().
+  template <class F>
+  void runs(F&& f) const {
+    contact_.for_each_fluid_run_of(b_, fluid_x_, f);
+  }
+
+ private:
+  const Contact<D>& contact_;
+  std::size_t b_;
+  const ConstVectorView<D>& fluid_x_;
+};
+
+/// For every particle b of `contact`, output.set(b, pass(b, fluid neighbours of b)), the
+/// neighbours as FluidNeighborsOf: the passes that give a contact's particles a state from the
+/// fluid beside them (passes/wall_state.hpp) or take the fluid's force on them
+/// (passes/body_force.hpp).
 template <int D, class Pass, class Output>
 void for_each_contact_particle(const Contact<D>& contact, const ConstVectorView<D>& fluid_x, const Output& output,
                                const Pass& pass) {
-  for_each_particle(contact.particles().size(), [&](std::size_t b) {
-    const auto fluid_pairs = [&](auto&& f) { contact.for_each_fluid_neighbor_of(b, fluid_x, f); };
-    output.set(b, pass(b, fluid_pairs));
-  });
+  for_each_particle(contact.particles().size(),
+                    [&](std::size_t b) { output.set(b, pass(b, FluidNeighborsOf<D>(contact, b, fluid_x))); });
 }
 
 }  // namespace tide::passes

@@ -79,19 +79,25 @@ void wall_state(const RuntimeKernel<D>& kernel, Contact<D>& contact, const Parti
         // Free-slip walls have no velocity field: no pass reads a wall velocity there.
         w.velocity ? particles[*w.velocity] : VectorView<D>{}, particles[w.pressure],
         eos ? particles[w.density] : std::span<Real>{}, pressure_rule != nullptr};
-    for_each_contact_particle<D>(contact, x, output, [&](std::size_t b, const auto& fluid_pairs) {
+    for_each_contact_particle<D>(contact, x, output, [&](std::size_t b, const FluidNeighborsOf<D>& fluid_neighbors) {
       detail::WallState<D> state;
       const Vector<D> own_velocity = w.surface_velocity ? surface_velocity[b] : Vector<D>::Zero();
       Real weight_sum = 0;
       Real pressure_sum = 0;
       Vector<D> hydrostatic_sum = Vector<D>::Zero();
       Vector<D> velocity_sum = Vector<D>::Zero();
-      fluid_pairs([&](Index j, const Vector<D>& x_wf, Real r2) {
-        const Real weight = kernel.value(std::sqrt(r2));
-        weight_sum += weight;
-        pressure_sum += pressure[j] * weight;
-        hydrostatic_sum += (density[j] * weight) * x_wf;
-        if constexpr (WithVelocity) velocity_sum += weight * v[j];
+      // The kernel values of a run in one call, then the sums pair by pair in the list's order.
+      fluid_neighbors.runs([&](const NeighborRun<D>& run) {
+        const auto w = kernel_values(kernel, run);
+        for (int k = 0; k < run.count; ++k) {
+          const Index j = run.index[k];
+          const Real weight = w[k];
+          weight_sum += weight;
+          pressure_sum += pressure[j] * weight;
+          const Real density_weight = density[j] * weight;
+          for (int d = 0; d < D; ++d) hydrostatic_sum[d] += density_weight * run.x_ij[d][k];
+          if constexpr (WithVelocity) velocity_sum += weight * v[j];
+        }
       });
       if constexpr (WithVelocity)
         state.velocity = weight_sum > 0 ? Vector<D>(2 * own_velocity - velocity_sum / weight_sum) : own_velocity;

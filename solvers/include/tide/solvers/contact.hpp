@@ -74,6 +74,11 @@ class Contact {
   void for_each_fluid_neighbor_of(std::size_t b, const ConstVectorView<D>& fluid_x, F&& f) const {
     contact_to_fluid_list_.for_each(b, positions(), fluid_x, f);
   }
+  /// The same walk in runs of NeighborRun.
+  template <class F>
+  void for_each_fluid_run_of(std::size_t b, const ConstVectorView<D>& fluid_x, F&& f) const {
+    contact_to_fluid_list_.for_each_run(b, positions(), fluid_x, f);
+  }
 
   /// Adds one item per buffer of its fields, grid, cross tables and lists, named after the
   /// contact ("<name> grid", "fluid-<name> list", ...).
