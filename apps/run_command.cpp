@@ -149,17 +149,20 @@ SeriesRecorder<D> body_recorder(const scene::Scene& scene, const RigidBodies<D>&
     } else {
       for (const std::string& a : axes) columns.push_back(body + "omega_" + a);
     }
-    for (const std::string& a : axes) columns.push_back(body + "f" + a);
-    if (D == 2) {
-      columns.push_back(body + "torque");
-    } else {
-      for (const std::string& a : axes) columns.push_back(body + "torque_" + a);
+    for (const char* load : {"", "contact_"}) {
+      for (const std::string& a : axes) columns.push_back(body + load + "f" + a);
+      if (D == 2) {
+        columns.push_back(body + load + "torque");
+      } else {
+        for (const std::string& a : axes) columns.push_back(body + load + "torque_" + a);
+      }
     }
   }
   const std::vector<std::string> comments{
       "TideSPH rigid bodies of " + scene.source,
       "SI units; orientation from the start (2D: angle about z in rad; 3D: unit quaternion); force and torque "
-      "are the fluid's, without gravity, the torque about the centre of mass or the pivot"};
+      "are the fluid's, contact_ force and torque those of the bodies and walls it touches, without gravity, the "
+      "torques about the centre of mass or the pivot"};
   return SeriesRecorder<D>(scene,
                            std::make_unique<io::SeriesWriter>(output_directory / "bodies.csv", comments, columns),
                            [](const Simulation<D>& s) {
@@ -182,12 +185,16 @@ SeriesRecorder<D> body_recorder(const scene::Scene& scene, const RigidBodies<D>&
                                } else {
                                  for (int d = 0; d < 3; ++d) row.push_back(omega[d]);
                                }
-                               for (int d = 0; d < D; ++d) row.push_back(bodies.fluid_force(k)[d]);
-                               if (D == 2) {
-                                 row.push_back(bodies.fluid_torque(k).z());
-                               } else {
-                                 for (int d = 0; d < 3; ++d) row.push_back(bodies.fluid_torque(k)[d]);
-                               }
+                               const auto add_load = [&](const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
+                                 for (int d = 0; d < D; ++d) row.push_back(force[d]);
+                                 if (D == 2) {
+                                   row.push_back(torque.z());
+                                 } else {
+                                   for (int d = 0; d < 3; ++d) row.push_back(torque[d]);
+                                 }
+                               };
+                               add_load(bodies.fluid_force(k), bodies.fluid_torque(k));
+                               add_load(bodies.contact_force(k), bodies.contact_torque(k));
                              }
                              return row;
                            });

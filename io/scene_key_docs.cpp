@@ -28,6 +28,7 @@ std::vector<SectionDoc> section_docs() {
       section_doc("domain.inflow", inflow_keys()),
       section_doc("solver", solver_keys()),
       section_doc("solver.surface_tension", surface_tension_keys()),
+      section_doc("solver.body_contact", body_contact_keys()),
       section_doc("time", time_keys()),
       section_doc("output", output_keys()),
       section_doc("output.recovery", recovery_keys()),

@@ -98,6 +98,7 @@ std::span<const Key<scene::Body>> body_keys();
 /// about z and may not (`refusal_in_2d` says so).
 scene::Vec read_rotation_axis(const ValueReader& values, const Node& value, const std::string& refusal_in_2d);
 std::span<const Key<scene::BodyConstraints>> body_constraint_keys();
+std::span<const Key<scene::BodyContact>> body_contact_keys();
 std::span<const Key<scene::Domain>> domain_keys();
 std::span<const Key<scene::Inflow>> inflow_keys();
 std::span<const Key<scene::Solver>> solver_keys();

@@ -49,4 +49,29 @@ std::span<const Key<scene::BodyConstraints>> body_constraint_keys() {
   return keys;
 }
 
+std::span<const Key<scene::BodyContact>> body_contact_keys() {
+  static constexpr std::array<Key<scene::BodyContact>, 3> keys{{
+      {"restitution", "number in (0, 1]", "–", "`0.2`",
+       "The ratio of the normal speeds after and before an impact of two solid particles (the spring's damping).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::BodyContact& contact) {
+         contact.restitution = values.number(value, in_unit_interval);
+       }},
+      {"friction", "number >= 0", "–", "`0.5`",
+       "Coulomb's coefficient: the tangential force of a contact is at most this times the normal force.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::BodyContact& contact) {
+         contact.friction = values.number(value, non_negative);
+       }},
+      {"frequency", "number > 0", "rad/s", "0.2 / the acoustic time step",
+       "ω of a particle pair's spring, k = m ω² with m the lighter particle's share of its body's mass: a body resting "
+       "on others sinks into them by about g / ω² times its particles per contact.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::BodyContact& contact) {
+         contact.frequency = values.number(value, positive);
+       }},
+  }};
+  return keys;
+}
+
 }  // namespace tide::io

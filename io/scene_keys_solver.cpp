@@ -6,7 +6,7 @@
 namespace tide::io {
 
 std::span<const Key<scene::Solver>> solver_keys() {
-  static constexpr std::array<Key<scene::Solver>, 24> keys{{
+  static constexpr std::array<Key<scene::Solver>, 25> keys{{
       {"scheme", "string: `\"wcsph\"`, `\"dfsph\"` or `\"iisph\"`", "–", "`\"wcsph\"`",
        "Weakly compressible SPH, or an incompressible scheme: divergence-free SPH (Bender & Koschier 2015, 2017) or "
        "implicit incompressible SPH (Ihmsen et al. 2014); see [Incompressible schemes](#incompressible-schemes). "
@@ -183,6 +183,13 @@ std::span<const Key<scene::Solver>> solver_keys() {
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Solver& solver) {
          read_section(values, value, surface_tension_keys(), solver.surface_tension);
+       }},
+      {"body_contact", "object", "–", "the defaults of its keys",
+       "How rigid bodies touch one another and the walls: `restitution`, `friction`, `frequency` "
+       "([bodies.md](bodies.md), \"Contact\").",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Solver& solver) {
+         read_section(values, value, body_contact_keys(), solver.body_contact);
        }},
   }};
   return keys;

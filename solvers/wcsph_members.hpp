@@ -70,6 +70,8 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   time_step_rule_.cfl = static_cast<Real>(scene.solver.cfl);
   time_step_rule_.viscous_number = static_cast<Real>(scene.solver.viscous_number);
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
+  contact_law_ = contact_law(scene.solver.body_contact, static_cast<Real>(scene.particle_spacing),
+                             time_step_rule_.cfl * smoothing_length_ / time_step_rule_.sound_speed);
   time_ = scene.time.start;
 
   if (!moving_walls_.empty()) moving_walls_.move_to(0, step_count_, time_);  // their velocity at the start
@@ -142,7 +144,10 @@ std::vector<Stage> Wcsph<D>::force_stages() {
   if (interactions_.contact_count() > 0)
     stages.push_back({"wall_state", [this](StepContext& c) { extrapolate_wall_state(step_gravity(c)); }});
   stages.push_back({"momentum", [this](StepContext& c) { compute_acceleration(step_gravity(c)); }});
-  if (!bodies_.empty()) stages.push_back({"body_force", [this](StepContext&) { compute_body_forces(); }});
+  if (!bodies_.empty()) {
+    stages.push_back({"body_force", [this](StepContext&) { compute_body_forces(); }});
+    stages.push_back({"body_contact", [this](StepContext&) { bodies_.touch(contact_law_, interactions_); }});
+  }
   if (tension_) {
     std::string name;
     for (const std::string_view pass : passes::surface_tension_passes(scene_.solver.surface_tension.model)) {

@@ -241,7 +241,8 @@ TEST_F(TideCommand, RunWritesBodies) {
   EXPECT_EQ(lines[2],
             "time,walls.obstacles[0].x,walls.obstacles[0].y,walls.obstacles[0].angle,walls.obstacles[0].vx,"
             "walls.obstacles[0].vy,walls.obstacles[0].omega,walls.obstacles[0].fx,walls.obstacles[0].fy,"
-            "walls.obstacles[0].torque");
+            "walls.obstacles[0].torque,walls.obstacles[0].contact_fx,walls.obstacles[0].contact_fy,"
+            "walls.obstacles[0].contact_torque");
   std::istringstream last(lines.back());
   double time = 0, x = 0, y = 0;
   char comma = 0;

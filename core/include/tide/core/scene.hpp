@@ -205,6 +205,7 @@ struct Solver {
   int max_solver_iterations = 100;      // cap per pressure solve
   int max_failed_solves = 10;           // consecutive steps whose solve missed its threshold before the run stops
   SurfaceTension surface_tension;
+  BodyContact body_contact;  // between rigid bodies and with walls (scene_body.hpp)
 };
 
 /// The skin without solver.neighbor_skin: 0.3 spacings for wcsph, where a step moves a particle a

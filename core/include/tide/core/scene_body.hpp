@@ -24,4 +24,13 @@ struct Body {
   BodyConstraints constraints;
 };
 
+/// How bodies touch one another and the walls: a spring and dashpot along the line between two
+/// solid particles closer than a particle spacing, with Coulomb friction across it
+/// (solvers/include/tide/solvers/body_contacts.hpp).
+struct BodyContact {
+  double restitution = 0.2;         // normal speed after an impact / before (0 < e <= 1)
+  double friction = 0.5;            // Coulomb coefficient μ: the tangential force is at most μ × the normal one
+  std::optional<double> frequency;  // rad/s of a particle pair's spring; unset: 0.2 / the acoustic time step
+};
+
 }  // namespace tide::scene

@@ -1,24 +1,27 @@
 #pragma once
 
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "tide/core/particle_set.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/solvers/body_contacts.hpp"
 #include "tide/solvers/contact.hpp"
+#include "tide/solvers/interactions.hpp"
 #include "tide/solvers/moving_walls.hpp"
 #include "tide/solvers/rigid_body.hpp"
 
 namespace tide {
 
 /// The wall contacts that are rigid bodies moved by the fluid (scene::Body): each is a moving
-/// wall contact whose particles carry the force the fluid exerts on them (passes/body_force.hpp),
-/// summed over the body in the particles' order, which the neighbour sort fixes for any thread
-/// count, into a force and a torque about the body's reference point. Gravity acts at the centre
-/// of mass. The bodies step by velocity Verlet with the fluid: kick_drift at the step's start
-/// (half a kick with the forces of the last step's end, then the drift, placing the particles
-/// at the step's end), kick at its end with the forces there.
+/// wall contact whose particles carry the force the fluid exerts on them (passes/body_force.hpp)
+/// and the force of the solids they touch (touch(), body_contacts.hpp), each summed over the body
+/// in the particles' order, which the neighbour sort fixes for any thread count, into a force and
+/// a torque about the body's reference point. Gravity acts at the centre of mass. The bodies step by velocity Verlet
+/// with the fluid: kick_drift at the step's start (half a kick with the forces of the last step's end, then the drift,
+/// placing the particles at the step's end), kick at its end with the forces there.
 template <int D>
 class RigidBodies {
  public:
@@ -26,9 +29,9 @@ class RigidBodies {
 
   /// Moves `contact` (a moving contact whose fields have a surface velocity and an acceleration)
   /// as `body`; `start` holds each particle's position at the start, `force` receives the
-  /// fluid's force on it.
-  void add(Contact<D>& contact, RigidBody body, VectorField start, VectorField force) {
-    bodies_.push_back({&contact, std::move(body), start, force});
+  /// fluid's force on it and `contact_force` that of the solids it touches.
+  void add(Contact<D>& contact, RigidBody body, VectorField start, VectorField force, VectorField contact_force) {
+    bodies_.push_back({&contact, std::move(body), start, force, contact_force, {}, {}});
   }
 
   bool empty() const { return bodies_.empty(); }
@@ -36,8 +39,11 @@ class RigidBodies {
   const RigidBody& body(std::size_t k) const { return bodies_[k].body; }
   const Contact<D>& contact(std::size_t k) const { return *bodies_[k].contact; }
   /// The fluid's force on body k and its torque about the reference point, as last summed.
-  const Eigen::Vector3d& fluid_force(std::size_t k) const { return bodies_[k].force; }
-  const Eigen::Vector3d& fluid_torque(std::size_t k) const { return bodies_[k].torque; }
+  const Eigen::Vector3d& fluid_force(std::size_t k) const { return bodies_[k].fluid.force; }
+  const Eigen::Vector3d& fluid_torque(std::size_t k) const { return bodies_[k].fluid.torque; }
+  /// The force of the solids body k touches and its torque, as last summed.
+  const Eigen::Vector3d& contact_force(std::size_t k) const { return bodies_[k].solids.force; }
+  const Eigen::Vector3d& contact_torque(std::size_t k) const { return bodies_[k].solids.torque; }
 
   /// Where each body's fluid force goes: f(contact, force view) for every body, e.g. the
   /// body_force pass.
@@ -46,26 +52,36 @@ class RigidBodies {
     for (Entry& entry : bodies_) f(std::as_const(*entry.contact), entry.contact->particles()[entry.force_field]);
   }
 
-  /// Sums each body's particle forces into its force and torque (after the body_force pass).
+  /// Sums each body's particle forces from the fluid into its fluid force and torque (after
+  /// the body_force pass).
   void sum_forces() {
-    for (Entry& entry : bodies_) {
-      const ParticleSet<D>& set = entry.contact->particles();
-      const auto force = set[entry.force_field];
-      const auto start = set[entry.start];
-      const RigidBody::Kinematics motion = entry.body.kinematics();
-      entry.force.setZero();
-      entry.torque.setZero();
-      for (std::size_t b = 0; b < set.size(); ++b) {
-        Eigen::Vector3d f = Eigen::Vector3d::Zero(), x0 = Eigen::Vector3d::Zero();
-        for (int d = 0; d < D; ++d) {
-          f[d] = static_cast<double>(force.component[d][b]);
-          x0[d] = static_cast<double>(start.component[d][b]);
-        }
-        // The lever from the reference point, from the start position: no periodic image.
-        const Eigen::Vector3d lever = motion.lever(x0);
-        entry.force += f;
-        entry.torque += lever.cross(f);
+    for (Entry& entry : bodies_) entry.fluid = sum(entry, entry.force_field);
+  }
+
+  /// The contact forces of `law` on every body's particles from the other bodies and the walls
+  /// of `interactions` (every wall contact), summed per body.
+  void touch(const ContactLaw& law, const Interactions<D>& interactions) {
+    std::vector<SolidParticles<D>> solids;
+    std::vector<std::size_t> body_sets(bodies_.size());
+    for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+      const Contact<D>& contact = interactions.contact(k);
+      if (contact.role() != ContactRole::wall) continue;
+      const ParticleSet<D>& set = contact.particles();
+      const WallFields<D>& w = contact.fields();
+      SolidParticles<D> solid{set[w.position], w.surface_velocity ? set[*w.surface_velocity] : ConstVectorView<D>{},
+                              set.size(), std::numeric_limits<Real>::infinity()};
+      for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        if (bodies_[b].contact != &contact) continue;
+        solid.mass_share = static_cast<Real>(bodies_[b].body.mass_properties().mass / static_cast<double>(set.size()));
+        body_sets[b] = solids.size();
       }
+      solids.push_back(solid);
+    }
+    cells_.build(solids, body_sets, law.distance);
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      Entry& entry = bodies_[k];
+      contact_forces<D>(law, cells_, solids, body_sets[k], entry.contact->particles()[entry.contact_force_field]);
+      entry.solids = sum(entry, entry.contact_force_field);
     }
   }
 
@@ -90,17 +106,45 @@ class RigidBodies {
   }
 
  private:
+  // A force and its torque about the body's reference point.
+  struct Load {
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();
+    Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  };
   struct Entry {
     Contact<D>* contact;
     RigidBody body;
     VectorField start;
     VectorField force_field;
-    Eigen::Vector3d force = Eigen::Vector3d::Zero();
-    Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+    VectorField contact_force_field;
+    Load fluid;   // from the fluid
+    Load solids;  // from the bodies and walls it touches
   };
 
+  // The particle forces of `field` summed over the body in particle order, with their torque.
+  static Load sum(const Entry& entry, VectorField field) {
+    const ParticleSet<D>& set = entry.contact->particles();
+    const auto force = set[field];
+    const auto start = set[entry.start];
+    const RigidBody::Kinematics motion = entry.body.kinematics();
+    Load load;
+    for (std::size_t b = 0; b < set.size(); ++b) {
+      Eigen::Vector3d f = Eigen::Vector3d::Zero(), x0 = Eigen::Vector3d::Zero();
+      for (int d = 0; d < D; ++d) {
+        f[d] = static_cast<double>(force.component[d][b]);
+        x0[d] = static_cast<double>(start.component[d][b]);
+      }
+      // The lever from the reference point, from the start position: no periodic image.
+      const Eigen::Vector3d lever = motion.lever(x0);
+      load.force += f;
+      load.torque += lever.cross(f);
+    }
+    return load;
+  }
+
   static void kick_body(Entry& entry, double half_dt, const Eigen::Vector3d& g) {
-    entry.body.kick(entry.force + entry.body.gravity_force(g), entry.torque + entry.body.gravity_torque(g), half_dt);
+    entry.body.kick(entry.fluid.force + entry.solids.force + entry.body.gravity_force(g),
+                    entry.fluid.torque + entry.solids.torque + entry.body.gravity_torque(g), half_dt);
   }
 
   void place(Entry& entry, std::uint64_t step, double time) const {
@@ -111,6 +155,7 @@ class RigidBodies {
 
   GridDomain<D> domain_;
   std::vector<Entry> bodies_;
+  SolidCells<D> cells_;  // kept between steps for its storage
 };
 
 }  // namespace tide

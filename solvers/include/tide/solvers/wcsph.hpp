@@ -129,6 +129,7 @@ class Wcsph final : public Simulation<D> {
   Interactions<D> interactions_;
   MovingWalls<D> moving_walls_;
   RigidBodies<D> bodies_;
+  ContactLaw contact_law_;  // between the bodies and with the walls
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   TimeStep last_time_step_;
