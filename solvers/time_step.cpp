@@ -23,10 +23,14 @@ std::string_view time_step_limit_name(TimeStepLimit limit) {
   return "unknown";
 }
 
+Real acoustic_time_step(const TimeStepRule& rule, Real max_speed) {
+  return rule.cfl * rule.smoothing_length / (rule.sound_speed + max_speed);
+}
+
 TimeStep choose_time_step(const TimeStepRule& rule, Real max_speed, Real max_acceleration) {
   const Real h = rule.smoothing_length;
   TimeStep step = rule.sound_speed > 0
-                      ? TimeStep{rule.cfl * h / (rule.sound_speed + max_speed), TimeStepLimit::acoustic}
+                      ? TimeStep{acoustic_time_step(rule, max_speed), TimeStepLimit::acoustic}
                       : TimeStep{rule.cfl * h / std::max(max_speed, rule.speed_floor), TimeStepLimit::velocity};
   if (rule.kinematic_viscosity > 0) {
     const Real viscous = rule.viscous_number * h * h / rule.kinematic_viscosity;

@@ -71,7 +71,7 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
   time_step_rule_.viscous_number = static_cast<Real>(scene.solver.viscous_number);
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
   contact_law_ = contact_law(scene.solver.body_contact, static_cast<Real>(scene.particle_spacing),
-                             time_step_rule_.cfl * smoothing_length_ / time_step_rule_.sound_speed);
+                             acoustic_time_step(time_step_rule_, 0));
   time_ = scene.time.start;
 
   if (!moving_walls_.empty()) moving_walls_.move_to(0, step_count_, time_);  // their velocity at the start

@@ -4,7 +4,7 @@
 // pass (momentum.hpp) gives the fluid from that particle, so that fluid and body exchange
 // momentum in equal and opposite amounts.
 
-#include <cmath>
+#include <array>
 #include <utility>
 
 #include "momentum.hpp"

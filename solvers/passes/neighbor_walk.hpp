@@ -104,12 +104,8 @@ class FluidNeighborsOf {
   FluidNeighborsOf(const Contact<D>& contact, std::size_t b, const ConstVectorView<D>& fluid_x)
       : contact_(contact), b_(b), fluid_x_(fluid_x) {}
 
-  /// f(j, x_bj, r²) for every fluid neighbour j.
-  template <class F>
-  void pairs(F&& f) const {
-    contact_.for_each_fluid_neighbor_of(b_, fluid_x_, f);
-  }
-  /// f(run) for runs of fluid neighbours (NeighborRun), in the order of pairs().
+  /// f(run) for runs of fluid neighbours (NeighborRun), in the order of
+  /// Contact::for_each_fluid_neighbor_of.
   template <class F>
   void runs(F&& f) const {
     contact_.for_each_fluid_run_of(b_, fluid_x_, f);

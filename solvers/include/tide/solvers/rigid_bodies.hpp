@@ -19,9 +19,10 @@ namespace tide {
 /// wall contact whose particles carry the force the fluid exerts on them (passes/body_force.hpp)
 /// and the force of the solids they touch (touch(), body_contacts.hpp), each summed over the body
 /// in the particles' order, which the neighbour sort fixes for any thread count, into a force and
-/// a torque about the body's reference point. Gravity acts at the centre of mass. The bodies step by velocity Verlet
-/// with the fluid: kick_drift at the step's start (half a kick with the forces of the last step's end, then the drift,
-/// placing the particles at the step's end), kick at its end with the forces there.
+/// a torque about the body's reference point. Gravity acts at the centre of mass. The bodies step
+/// by velocity Verlet with the fluid: kick_drift at the step's start (half a kick with the forces
+/// of the last step's end, then the drift, placing the particles at the step's end), kick at its
+/// end with the forces there.
 template <int D>
 class RigidBodies {
  public:

@@ -31,6 +31,9 @@ struct TimeStepRule {
   Real capillary_limit = 0;  // s; 0: no surface tension (see capillary_time_step)
 };
 
+/// The acoustic limit cfl h / (c0 + |v|max) of a rule with a sound speed (WCSPH).
+Real acoustic_time_step(const TimeStepRule& rule, Real max_speed);
+
 /// The capillary-wave limit of an explicit surface-tension step, 0.25 sqrt(ρ h³ / (2π σ))
 /// (Brackbill, Kothe & Zemach 1992, eq. 61; Adami, Hu & Adams 2010 take the factor 0.25), with
 /// ρ the lightest phase's rest density.
