@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "tide/core/kernels/cubic_spline.hpp"
-#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/log.hpp"
 #include "tide/neighbor/morton.hpp"
 #include "tide/neighbor/neighbor_list.hpp"
@@ -608,12 +607,7 @@ class CachedGradients : public testing::TestWithParam<bool> {};
 TEST_P(CachedGradients, AreTheBruteForceKernelGradients) {
   const GridDomain<3> domain = test_domain<3>(GetParam());
   const CubicSplineKernel<3> kernel(support / CubicSplineKernel<3>::support_factor);
-  // The cache's derivatives as the solvers compute them, a run at a time through the kernel
-  // chosen at run time.
-  const RuntimeKernel<3> runtime_kernel(kernel);
-  const auto derivatives_over_r = [&](const Real* r2, int count, Real* f) {
-    runtime_kernel.derivatives_over_r(r2, count, f);
-  };
+  const auto derivative_over_r = [&](Real r) { return kernel.derivative_over_r(r); };
   std::size_t most = 0;
 
   NeighborGrid<3> grid(domain, support);
@@ -622,7 +616,7 @@ TEST_P(CachedGradients, AreTheBruteForceKernelGradients) {
   const auto x = std::as_const(set)[set.position()];
   NeighborList<3> built;
   built.build(grid, x, grid.own_neighbors(), x);
-  built.cache_gradients(x, x, derivatives_over_r);
+  built.cache_gradients(x, x, derivative_over_r);
   expect_cached_gradients_are_brute_force<3>(built, set, set, domain, kernel, most);
   EXPECT_GT(most, std::size_t(NeighborRun<3>::capacity));
 
@@ -634,7 +628,7 @@ TEST_P(CachedGradients, AreTheBruteForceKernelGradients) {
   const auto source_x = std::as_const(sources)[sources.position()];
   NeighborList<3> cross;
   cross.build(grid, x, table, source_x);
-  cross.cache_gradients(x, source_x, derivatives_over_r);
+  cross.cache_gradients(x, source_x, derivative_over_r);
   expect_cached_gradients_are_brute_force<3>(cross, set, sources, domain, kernel, most);
   EXPECT_GT(most, 0u);
 
@@ -646,7 +640,7 @@ TEST_P(CachedGradients, AreTheBruteForceKernelGradients) {
   candidates.build(skin_grid, skin_x, skin_grid.own_neighbors(), skin_x);
   NeighborList<3> refined;
   refined.refine(candidates, skin_x, skin_x);
-  refined.cache_gradients(skin_x, skin_x, derivatives_over_r);
+  refined.cache_gradients(skin_x, skin_x, derivative_over_r);
   move_by_up_to(set, skin / 2, 11);
   refined.refine(candidates, skin_x, skin_x);
   refined.for_each_run<false>(0, skin_x, skin_x, [&](const NeighborRun<3>& run) {
@@ -657,7 +651,7 @@ TEST_P(CachedGradients, AreTheBruteForceKernelGradients) {
       EXPECT_EQ(run.r2[k], r2);
     }
   });
-  refined.cache_gradients(skin_x, skin_x, derivatives_over_r);
+  refined.cache_gradients(skin_x, skin_x, derivative_over_r);
   expect_cached_gradients_are_brute_force<3>(refined, set, set, domain, kernel, most);
 }
 

@@ -31,12 +31,13 @@ void density_summation(const RuntimeKernel<D>& kernel, ParticleSet<D>& fluid, co
   const std::size_t contact_count = interactions.contact_count();
   const auto add_sum = [&](Real sum, const std::span<const Real> neighbor_mass, const auto& runs) {
     runs([&](const NeighborRun<D>& run) {
-      const auto w = kernel_values(kernel, run);
-      if constexpr (NumberDensity) {
-        accumulate(run, sum, [&](int k) { return w[k]; });
-      } else {
-        accumulate(run, sum, [&](int k) { return neighbor_mass[run.index[k]] * w[k]; });
-      }
+      kernel.visit([&](const auto& w) {
+        if constexpr (NumberDensity) {
+          accumulate(run, sum, [&](int k) { return w.value(std::sqrt(run.r2[k])); });
+        } else {
+          accumulate(run, sum, [&](int k) { return neighbor_mass[run.index[k]] * w.value(std::sqrt(run.r2[k])); });
+        }
+      });
     });
     return sum;
   };

@@ -104,8 +104,14 @@ class FluidNeighborsOf {
   FluidNeighborsOf(const Contact<D>& contact, std::size_t b, const ConstVectorView<D>& fluid_x)
       : contact_(contact), b_(b), fluid_x_(fluid_x) {}
 
-  /// f(run) for runs of fluid neighbours (NeighborRun), in the order of
-  /// Contact::for_each_fluid_neighbor_of.
+  /// f(j, x_bj, r2) for every fluid neighbour j, in the order of
+  /// Contact::for_each_fluid_neighbor_of: for sums that take the pairs one by one anyway (a run's
+  /// x_ij and r² arrays would only be stored and read back).
+  template <class F>
+  void pairs(F&& f) const {
+    contact_.for_each_fluid_neighbor_of(b_, fluid_x_, f);
+  }
+  /// f(run) for runs of fluid neighbours (NeighborRun), in the same order.
   template <class F>
   void runs(F&& f) const {
     contact_.for_each_fluid_run_of(b_, fluid_x_, f);

@@ -73,8 +73,9 @@ void wall_state(const RuntimeKernel<D>& kernel, Contact<D>& contact, const Parti
   const ConstVectorView<D> acceleration =
       w.acceleration ? std::as_const(particles)[*w.acceleration] : ConstVectorView<D>{};
   const EquationOfState* eos = pressure_rule ? pressure_rule->eos : nullptr;
-  // Compiled with and without the velocity, chosen once: free-slip walls neither sum nor store it.
-  const auto run = [&]<bool WithVelocity>() {
+  // Compiled with and without the velocity, chosen once: free-slip walls neither sum nor store it;
+  // and per kernel (`concrete`), so that the pair loop computes its value inline.
+  const auto run = [&]<bool WithVelocity>(const auto& concrete) {
     const detail::WallStateOutput<D, WithVelocity> output{
         // Free-slip walls have no velocity field: no pass reads a wall velocity there.
         w.velocity ? particles[*w.velocity] : VectorView<D>{}, particles[w.pressure],
@@ -86,18 +87,13 @@ void wall_state(const RuntimeKernel<D>& kernel, Contact<D>& contact, const Parti
       Real pressure_sum = 0;
       Vector<D> hydrostatic_sum = Vector<D>::Zero();
       Vector<D> velocity_sum = Vector<D>::Zero();
-      // The kernel values of a run in one call, then the sums pair by pair in the list's order.
-      fluid_neighbors.runs([&](const NeighborRun<D>& run) {
-        const auto w = kernel_values(kernel, run);
-        for (int k = 0; k < run.count; ++k) {
-          const Index j = run.index[k];
-          const Real weight = w[k];
-          weight_sum += weight;
-          pressure_sum += pressure[j] * weight;
-          const Real density_weight = density[j] * weight;
-          for (int d = 0; d < D; ++d) hydrostatic_sum[d] += density_weight * run.x_ij[d][k];
-          if constexpr (WithVelocity) velocity_sum += weight * v[j];
-        }
+      // The sums pair by pair in the list's order.
+      fluid_neighbors.pairs([&](Index j, const Vector<D>& x_bj, Real r2) {
+        const Real weight = concrete.value(std::sqrt(r2));
+        weight_sum += weight;
+        pressure_sum += pressure[j] * weight;
+        hydrostatic_sum += (density[j] * weight) * x_bj;
+        if constexpr (WithVelocity) velocity_sum += weight * v[j];
       });
       if constexpr (WithVelocity)
         state.velocity = weight_sum > 0 ? Vector<D>(2 * own_velocity - velocity_sum / weight_sum) : own_velocity;
@@ -116,11 +112,13 @@ void wall_state(const RuntimeKernel<D>& kernel, Contact<D>& contact, const Parti
       return state;
     });
   };
-  if (w.velocity) {
-    run.template operator()<true>();
-  } else {
-    run.template operator()<false>();
-  }
+  kernel.visit([&](const auto& concrete) {
+    if (w.velocity) {
+      run.template operator()<true>(concrete);
+    } else {
+      run.template operator()<false>(concrete);
+    }
+  });
 }
 
 /// wall_state for every contact of `interactions` that is a wall, but (without `pressure_rule`,

@@ -76,15 +76,14 @@ class NeighborList {
     });
   }
 
-  /// Keeps ∇W_ij = (1/r) dW/dr x_ij of every listed pair at the positions `query_x` and
+  /// Keeps ∇W_ij = derivative_over_r(r) x_ij of every listed pair at the positions `query_x` and
   /// `source_x` (those of the last build or refine), computed from the x_ij and r² of
   /// for_each_run, for the runs to hand out as NeighborRun::gradient until the next build or
-  /// refine; derivatives_over_r(r2, count, f) sets f[k] = (1/r) dW/dr at r = √r2[k] for a run. A pressure solve walks
-  /// the same pairs in every sweep of a step; this computes their kernel term once, and a walk that needs only the
-  /// gradients no longer gathers positions.
-  template <class DerivativesOverR>
+  /// refine. A pressure solve walks the same pairs in every sweep of a step; this computes their
+  /// kernel term once, and a walk that needs only the gradients no longer gathers positions.
+  template <class DerivativeOverR>
   void cache_gradients(const ConstVectorView<D>& query_x, const ConstVectorView<D>& source_x,
-                       const DerivativesOverR& derivatives_over_r) {
+                       const DerivativeOverR& derivative_over_r) {
     gradients_cached_ = false;
     gradients_.resize(blocks_.size());
     parallel_blocks(blocks_.size(), 1, [&](std::size_t first_block, std::size_t last_block) {
@@ -104,10 +103,9 @@ class NeighborList {
           const int total = static_cast<int>(span_[i].count);
           int first = 0;
           for_each_run(i, query_x, source_x, [&](const NeighborRun<D>& run) {
-            std::array<Real, NeighborRun<D>::capacity> factors;
-            derivatives_over_r(run.r2.data(), run.count, factors.data());
             for (int k = 0; k < run.count; ++k) {
-              for (int d = 0; d < D; ++d) particle[d * total + first + k] = factors[k] * run.x_ij[d][k];
+              const Real factor = derivative_over_r(std::sqrt(run.r2[k]));
+              for (int d = 0; d < D; ++d) particle[d * total + first + k] = factor * run.x_ij[d][k];
             }
             first += run.count;
           });

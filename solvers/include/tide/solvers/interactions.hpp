@@ -141,12 +141,13 @@ class Interactions {
   /// positions of the last update (NeighborList::cache_gradients), for the runs walked until the
   /// next update, which drops them; passes that take those runs must use the same kernel.
   void cache_gradients(const RuntimeKernel<D>& kernel, const ConstVectorView<D>& fluid_x) {
-    const auto derivatives_over_r = [&](const Real* r2, int count, Real* f) {
-      kernel.derivatives_over_r(r2, count, f);
-    };
-    fluid_list_.cache_gradients(fluid_x, fluid_x, derivatives_over_r);
-    for (auto& contact : contacts_)
-      contact->fluid_to_contact_list_.cache_gradients(fluid_x, contact->positions(), derivatives_over_r);
+    // Instantiated per kernel, so that its derivative is computed in the pair loop.
+    kernel.visit([&](const auto& concrete) {
+      const auto derivative_over_r = [&](Real r) { return concrete.derivative_over_r(r); };
+      fluid_list_.cache_gradients(fluid_x, fluid_x, derivative_over_r);
+      for (auto& contact : contacts_)
+        contact->fluid_to_contact_list_.cache_gradients(fluid_x, contact->positions(), derivative_over_r);
+    });
   }
 
   /// `count` Reals of the update's sort and reorder arena, which no update needs between two

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <type_traits>
 #include <variant>
 
@@ -11,9 +12,10 @@ namespace tide {
 /// The scene's kernel, chosen at run time, for the passes: they are compiled once against this
 /// class rather than once per kernel (a scheme's passes instantiated for each of the seven kernels
 /// made its file take about four times as long to compile). One pair's value or gradient is a
-/// switch on the kernel, which a pair loop predicts every time; a run of pairs is evaluated by one
-/// call that loops over the concrete kernel (values, derivatives_over_r), where the kernel
-/// vectorises as it did inlined. Every number is the concrete kernel's own, bit for bit.
+/// switch on the kernel, which a pair loop predicts every time; a hot pair loop is instantiated
+/// per kernel by visit() around it alone, and a run of pairs can be evaluated by one call that
+/// loops over the concrete kernel (values, derivatives_over_r). Every number is the concrete
+/// kernel's own, bit for bit.
 template <int D>
 class RuntimeKernel {
  public:
@@ -42,9 +44,17 @@ class RuntimeKernel {
   }
 
   /// w[k] = W(√r2[k]) for k < count.
-  void values(const Real* r2, int count, Real* w) const;
+  void values(const Real* r2, int count, Real* w) const {
+    visit([&](const auto& kernel) {
+      for (int k = 0; k < count; ++k) w[k] = kernel.value(std::sqrt(r2[k]));
+    });
+  }
   /// f[k] = (1/r) dW/dr at r = √r2[k] for k < count: ∇W = f x_ij.
-  void derivatives_over_r(const Real* r2, int count, Real* f) const;
+  void derivatives_over_r(const Real* r2, int count, Real* f) const {
+    visit([&](const auto& kernel) {
+      for (int k = 0; k < count; ++k) f[k] = kernel.derivative_over_r(std::sqrt(r2[k]));
+    });
+  }
 
   /// f(concrete kernel).
   template <class F>
