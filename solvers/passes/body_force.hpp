@@ -42,24 +42,27 @@ void body_force(const RuntimeKernel<D>& kernel, const ViscositySettings& setting
           const Real p_over_rho2_b = body_pressure[b] / (rho_b * rho_b);
           Vector<D> total = Vector<D>::Zero();
           fluid_neighbors.runs([&](const NeighborRun<D>& run) {
-            std::array<Real, NeighborRun<D>::capacity> factors;
-            kernel.derivatives_over_r(run.r2.data(), run.count, factors.data());
-            for (int k = 0; k < run.count; ++k) {
-              const Index j = run.index[k];
-              const Real r2 = run.r2[k];
-              const Real rho_j = density[j];
-              Vector<D> x_jb;
-              for (int d = 0; d < D; ++d) x_jb[d] = -run.x_ij[d][k];
-              const Vector<D> grad_w = factors[k] * x_jb;
-              Vector<D> a_jb = -(m_b * (pressure[j] / (rho_j * rho_j) + p_over_rho2_b)) * grad_w;
-              if constexpr (Viscous) {
-                const Vector<D> v_jb = v[j] - body_velocity[b];
-                const Real coefficient = detail::viscous_coefficient<Model>(settings, m_b, rho_j, rho_b, v_jb.dot(x_jb),
-                                                                            x_jb.dot(grad_w), r2);
-                a_jb += coefficient * (Model == scene::ViscosityModel::artificial ? grad_w : v_jb);
+            with_gradients(kernel, run, [&](const auto& gradient) {
+              for (int k = 0; k < run.count; ++k) {
+                const Index j = run.index[k];
+                const Real r2 = run.r2[k];
+                const Real rho_j = density[j];
+                const std::array<Real, D> grad_w_bj = gradient(k);
+                Vector<D> x_jb, grad_w;  // x_jb = −x_bj, ∇W_jb = −∇W_bj
+                for (int d = 0; d < D; ++d) {
+                  x_jb[d] = -run.x_ij[d][k];
+                  grad_w[d] = -grad_w_bj[d];
+                }
+                Vector<D> a_jb = -(m_b * (pressure[j] / (rho_j * rho_j) + p_over_rho2_b)) * grad_w;
+                if constexpr (Viscous) {
+                  const Vector<D> v_jb = v[j] - body_velocity[b];
+                  const Real coefficient = detail::viscous_coefficient<Model>(settings, m_b, rho_j, rho_b,
+                                                                              v_jb.dot(x_jb), x_jb.dot(grad_w), r2);
+                  a_jb += coefficient * (Model == scene::ViscosityModel::artificial ? grad_w : v_jb);
+                }
+                total -= mass[j] * a_jb;
               }
-              total -= mass[j] * a_jb;
-            }
+            });
           });
           return total;
         });

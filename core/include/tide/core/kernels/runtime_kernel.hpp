@@ -13,9 +13,9 @@ namespace tide {
 /// class rather than once per kernel (a scheme's passes instantiated for each of the seven kernels
 /// made its file take about four times as long to compile). One pair's value or gradient is a
 /// switch on the kernel, which a pair loop predicts every time; a hot pair loop is instantiated
-/// per kernel by visit() around it alone, and a run of pairs can be evaluated by one call that
-/// loops over the concrete kernel (values, derivatives_over_r). Every number is the concrete
-/// kernel's own, bit for bit.
+/// per kernel by visit() around it alone (or, for its gradients, by with_gradients in
+/// neighbor_run.hpp), and a run's values can be taken in one call that loops over the concrete
+/// kernel (values). Every number is the concrete kernel's own, bit for bit.
 template <int D>
 class RuntimeKernel {
  public:
@@ -47,12 +47,6 @@ class RuntimeKernel {
   void values(const Real* r2, int count, Real* w) const {
     visit([&](const auto& kernel) {
       for (int k = 0; k < count; ++k) w[k] = kernel.value(std::sqrt(r2[k]));
-    });
-  }
-  /// f[k] = (1/r) dW/dr at r = √r2[k] for k < count: ∇W = f x_ij.
-  void derivatives_over_r(const Real* r2, int count, Real* f) const {
-    visit([&](const auto& kernel) {
-      for (int k = 0; k < count; ++k) f[k] = kernel.derivative_over_r(std::sqrt(r2[k]));
     });
   }
 
