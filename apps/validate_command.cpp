@@ -132,12 +132,15 @@ std::vector<StudyRun> run_study(const Plan& plan, const std::vector<int>& resolu
                                 std::size_t& reused_runs) {
   std::size_t total = 0;
   for (const Case& study_case : plan.cases) {
-    total += (resolutions.empty() ? study_case.resolutions.size() : resolutions.size()) * plan.schemes.size() *
-             plan.kernels.size();
+    const auto schemes = std::count_if(plan.schemes.begin(), plan.schemes.end(),
+                                       [&](const std::string& scheme) { return study_case.runs_scheme(scheme); });
+    total += (resolutions.empty() ? study_case.resolutions.size() : resolutions.size()) *
+             static_cast<std::size_t>(schemes) * plan.kernels.size();
   }
   std::vector<StudyRun> runs;
   for (const Case& study_case : plan.cases) {
     for (const std::string& scheme : plan.schemes) {
+      if (!study_case.runs_scheme(scheme)) continue;
       for (const KernelType kernel : plan.kernels) {
         for (const int resolution : resolutions.empty() ? study_case.resolutions : resolutions) {
           std::printf("[%zu/%zu] %s %s/%s resolution %d: ", runs.size() + 1, total, study_case.name.c_str(),

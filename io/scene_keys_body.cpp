@@ -6,7 +6,7 @@
 namespace tide::io {
 
 std::span<const Key<scene::Body>> body_keys() {
-  static constexpr std::array<Key<scene::Body>, 2> keys{{
+  static constexpr std::array<Key<scene::Body>, 3> keys{{
       {"density", "number > 0", "kg/m³", "",
        "The body's uniform density; its mass, centre of mass and inertia follow from its shape (in 2D, per metre "
        "of depth).",
@@ -17,6 +17,13 @@ std::span<const Key<scene::Body>> body_keys() {
       {"constraints", "object", "–", "none", "What the body may not do.", Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Body& body) {
          read_section(values, value, body_constraint_keys(), body.constraints);
+       }},
+      {"release_time", "number >= 0", "s", "`0`",
+       "The body is held where it starts, at rest, until this simulated time, while the fluid settles around it (as "
+       "DualSPHysics' FtPause); the fluid's force on it is summed from the start.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Body& body) {
+         body.release_time = values.number(value, non_negative);
        }},
   }};
   return keys;

@@ -8,6 +8,9 @@ STL and ASCII PLY.
   wedge:    a triangular prism, the triangle (0, 0), (2, 0), (0, 1) in x, y, from z = -1 to 1
   sphere:   an icosphere of radius 1 (an icosahedron's faces split in four three times: 1280
             triangles)
+  fan:      a stirrer about the z axis: a hub (a 32-sided cylinder of radius 0.25 from z = -0.3 to
+            0.3) and four blades, each a box from radius 0.35 to 1, 0.4 wide and 0.2 thick,
+            pitched 30 degrees about its radial axis; five closed shells that do not touch
 
 Lengths are in file units; a scene scales and places them (the mesh keys). Run with
 /usr/bin/python3 from the repository root; no packages beyond the standard library.
@@ -41,6 +44,21 @@ def cylinder(sides=64):
 
 def wedge():
     return prism([(0.0, 0.0), (2.0, 0.0), (0.0, 1.0)], -1.0, 1.0)
+
+
+def fan(blades=4, pitch_degrees=30.0):
+    vertices, triangles = prism([(0.25 * math.cos(2 * math.pi * k / 32), 0.25 * math.sin(2 * math.pi * k / 32))
+                                 for k in range(32)], -0.3, 0.3)
+    pitch = math.radians(pitch_degrees)
+    for b in range(blades):
+        yaw = 2 * math.pi * b / blades
+        blade, faces = prism([(0.35, -0.2), (1.0, -0.2), (1.0, 0.2), (0.35, 0.2)], -0.1, 0.1)
+        offset = len(vertices)
+        for x, y, z in blade:  # turned about the radial axis x by the pitch, then about z by the yaw
+            y, z = y * math.cos(pitch) - z * math.sin(pitch), y * math.sin(pitch) + z * math.cos(pitch)
+            vertices.append((x * math.cos(yaw) - y * math.sin(yaw), x * math.sin(yaw) + y * math.cos(yaw), z))
+        triangles += [(i + offset, j + offset, k + offset) for i, j, k in faces]
+    return vertices, triangles
 
 
 def sphere(levels=3):
@@ -108,7 +126,7 @@ def write_ply(path, vertices, triangles):
 
 def main():
     OUT.mkdir(parents=True, exist_ok=True)
-    for name, (vertices, triangles) in {"cylinder": cylinder(), "wedge": wedge(), "sphere": sphere()}.items():
+    for name, (vertices, triangles) in {"cylinder": cylinder(), "wedge": wedge(), "sphere": sphere(), "fan": fan()}.items():
         write_obj(OUT / f"{name}.obj", vertices, triangles)
         write_stl(OUT / f"{name}.stl", vertices, triangles)
         write_ply(OUT / f"{name}.ply", vertices, triangles)

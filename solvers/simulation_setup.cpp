@@ -149,8 +149,9 @@ void add_body(const scene::Scene& scene, std::size_t k, const ParticleSamples<D>
   const MovingObstacle<D> added =
       add_moving_contact<D>(scene, k, samples, mass, rest_density, interactions, {"fluid_force", "contact_force"});
   if (!added.contact) return;
-  bodies.add(*added.contact, RigidBody(properties, obstacle.body->constraints, D), added.start,
-             added.contact->particles().vector("fluid_force"), added.contact->particles().vector("contact_force"));
+  bodies.add(*added.contact, RigidBody(properties, obstacle.body->constraints, D), obstacle.body->release_time,
+             added.start, added.contact->particles().vector("fluid_force"),
+             added.contact->particles().vector("contact_force"));
 }
 
 // Σ_k W(|k| Δx) over the lattice around one particle: the summation density of a particle deep

@@ -101,7 +101,7 @@ Pipeline Wcsph<D>::build_pipeline() {
   }
   if (!bodies_.empty()) {
     stages.push_back({"body_kick_drift", [this](StepContext& c) {
-                        bodies_.kick_drift(c.dt, setup::to_space(gravity()), step_count_ + 1, time_ + c.dt);
+                        bodies_.kick_drift(c.dt, setup::to_space(gravity()), step_count_ + 1, time_);
                       }});
   }
   stages.push_back(neighbor_search_stage());
@@ -110,7 +110,8 @@ Pipeline Wcsph<D>::build_pipeline() {
   for (Stage& stage : force_stages()) stages.push_back(std::move(stage));
   stages.push_back({"kick", [this](StepContext& c) { kick(c.dt); }});
   if (!bodies_.empty())
-    stages.push_back({"body_kick", [this](StepContext& c) { bodies_.kick(c.dt, setup::to_space(step_gravity(c))); }});
+    stages.push_back(
+        {"body_kick", [this](StepContext& c) { bodies_.kick(c.dt, setup::to_space(step_gravity(c)), time_); }});
   if (scene_.domain.inflow) stages.push_back({"inflow_velocity", [this](StepContext&) { impose_inflow(0); }});
   stages.push_back({"advance_time", [this](StepContext& c) {
                       time_ += c.dt;
@@ -302,7 +303,9 @@ void Wcsph<D>::compute_density_rate(const Vector<D>& gravity) {
 template <int D>
 StepReport Wcsph<D>::step() {
   StepContext context;
-  context.report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
+  // The acoustic limit counts the bodies' particles as the fluid's (a falling body meeting still water).
+  context.report.time_step =
+      choose_time_step(time_step_rule_, std::max(max_speed_, max_body_speed_), max_acceleration_);
   last_time_step_ = context.report.time_step;
   context.dt = context.report.time_step.dt;
   pipeline_.run(context);
@@ -381,6 +384,8 @@ void Wcsph<D>::check_state() {
   const StateMaxima maxima = check_fluid_state<D>(fluid_, fluid_fields_, limits, step_count_, time_);
   max_speed_ = maxima.speed;
   max_acceleration_ = maxima.acceleration;
+  if (!bodies_.empty())
+    max_body_speed_ = bodies_.max_particle_speed(limits.max_speed, limits.speed_bound, step_count_, time_);
 }
 
 template <int D>

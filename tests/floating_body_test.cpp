@@ -12,9 +12,11 @@
 #include <sstream>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "tide/core/scene.hpp"
+#include "tide/solvers/instability.hpp"
 #include "tide/solvers/wcsph.hpp"
 
 namespace tide {
@@ -128,6 +130,26 @@ TEST(FloatingBody, LightBoxFloatsStably) {
   EXPECT_LT(draft, ratio * box_height + spacing) << "within a particle layer of its draft";
   EXPECT_LT(worst_tilt, 0.05) << "rad: the box stays upright";
   EXPECT_LT(late_speed, 0.1) << "m/s over 2-3 s: the box rides the waves, it does not bounce";
+}
+
+// A body that goes faster than the stability band stops the run with a message that names it,
+// not a fluid particle: here the band is 0.02 c0 = 0.4 m/s and the box falls through the air
+// above still water, reaching it after 0.04 s.
+TEST(FloatingBody, BodyOutsideTheSpeedBandIsNamed) {
+  scene::Scene s = floating_box();
+  s.solver.max_mach_number = 0.02;
+  scene::Box& box = std::get<scene::Box>(s.walls.obstacles[0].shape);
+  box.min[1] += 0.1;
+  box.max[1] += 0.1;
+  Wcsph<2> simulation(s);
+  try {
+    while (simulation.time() < 0.1) simulation.step();
+    FAIL() << "the falling box should leave the speed band";
+  } catch (const InstabilityError& error) {
+    EXPECT_NE(std::string(error.what()).find("walls.obstacles[0]"), std::string::npos) << error.what();
+    EXPECT_EQ(error.field(), "speed");
+    EXPECT_GT(error.value(), 0.4);
+  }
 }
 
 // No gravity, every axis periodic, fluid streaming past a disc at rest: the fluid's momentum

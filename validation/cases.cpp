@@ -6,10 +6,21 @@
 namespace tide::validation {
 
 const std::vector<Case>& cases() {
-  static const std::vector<Case> all{
-      hydrostatic_case(2), hydrostatic_case(3),         poiseuille_case(),           couette_case(),
-      taylor_green_case(), dam_break_2d_case(),         dam_break_3d_front_case(),   dam_break_buchner_case(),
-      dam_break_3d_case(), lid_driven_cavity_case(100), lid_driven_cavity_case(1000)};
+  static const std::vector<Case> all{hydrostatic_case(2),
+                                     hydrostatic_case(3),
+                                     poiseuille_case(),
+                                     couette_case(),
+                                     taylor_green_case(),
+                                     dam_break_2d_case(),
+                                     dam_break_3d_front_case(),
+                                     dam_break_buchner_case(),
+                                     dam_break_3d_case(),
+                                     lid_driven_cavity_case(100),
+                                     lid_driven_cavity_case(1000),
+                                     floating_box_case(2),
+                                     floating_box_case(3),
+                                     neutral_body_case(false),
+                                     neutral_body_case(true)};
   return all;
 }
 

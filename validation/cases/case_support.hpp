@@ -85,5 +85,7 @@ Case dam_break_3d_front_case();
 Case dam_break_buchner_case();
 Case dam_break_3d_case();
 Case lid_driven_cavity_case(int reynolds);
+Case floating_box_case(int dimension);
+Case neutral_body_case(bool ball);
 
 }  // namespace tide::validation

@@ -22,6 +22,7 @@ struct BodyConstraints {
 struct Body {
   double density = 0;  // kg/m³
   BodyConstraints constraints;
+  double release_time = 0;  // s: held where it starts, at rest, in the steps that begin before this time
 };
 
 /// How bodies touch one another and the walls: a spring and dashpot along the line between two

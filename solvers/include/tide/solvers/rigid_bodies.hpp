@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <utility>
@@ -9,6 +10,7 @@
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/body_contacts.hpp"
 #include "tide/solvers/contact.hpp"
+#include "tide/solvers/instability.hpp"
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/moving_walls.hpp"
 #include "tide/solvers/rigid_body.hpp"
@@ -29,10 +31,12 @@ class RigidBodies {
   explicit RigidBodies(const GridDomain<D>& domain) : domain_(domain) {}
 
   /// Moves `contact` (a moving contact whose fields have a surface velocity and an acceleration)
-  /// as `body`; `start` holds each particle's position at the start, `force` receives the
-  /// fluid's force on it and `contact_force` that of the solids it touches.
-  void add(Contact<D>& contact, RigidBody body, VectorField start, VectorField force, VectorField contact_force) {
-    bodies_.push_back({&contact, std::move(body), start, force, contact_force, {}, {}});
+  /// as `body`, from `release_time` on (it is held in the steps that begin before); `start` holds
+  /// each particle's position at the start, `force` receives the fluid's force on it and
+  /// `contact_force` that of the solids it touches.
+  void add(Contact<D>& contact, RigidBody body, double release_time, VectorField start, VectorField force,
+           VectorField contact_force) {
+    bodies_.push_back({&contact, std::move(body), release_time, start, force, contact_force, {}, {}});
   }
 
   bool empty() const { return bodies_.empty(); }
@@ -86,24 +90,50 @@ class RigidBodies {
     }
   }
 
-  /// Half a kick (dt/2) with the last summed forces and gravity g, then the drift by dt; places
-  /// the particles. Throws InstabilityError naming the body when one leaves the domain.
-  void kick_drift(double dt, const Eigen::Vector3d& g, std::uint64_t step, double time) {
+  /// Half a kick (dt/2) with the last summed forces and gravity g, then the drift by dt, for the
+  /// step that begins at `start_time`; places the particles. Throws InstabilityError naming the
+  /// body when one leaves the domain.
+  void kick_drift(double dt, const Eigen::Vector3d& g, std::uint64_t step, double start_time) {
     for (Entry& entry : bodies_) {
+      if (start_time < entry.release_time) continue;
       kick_body(entry, dt / 2, g);
       entry.body.drift(dt);
-      place(entry, step, time);
+      place(entry, step, start_time + dt);
     }
   }
 
-  /// Half a kick (dt/2) with the last summed forces and gravity g.
-  void kick(double dt, const Eigen::Vector3d& g) {
-    for (Entry& entry : bodies_) kick_body(entry, dt / 2, g);
+  /// Half a kick (dt/2) with the last summed forces and gravity g, ending the step that began at
+  /// `start_time`.
+  void kick(double dt, const Eigen::Vector3d& g, double start_time) {
+    for (Entry& entry : bodies_)
+      if (start_time >= entry.release_time) kick_body(entry, dt / 2, g);
   }
 
   /// Places every body's particles where the body is, with its velocities and accelerations.
   void place(std::uint64_t step, double time) {
     for (Entry& entry : bodies_) place(entry, step, time);
+  }
+
+  /// The largest speed of a body particle, as last placed: the time step keeps it, as the
+  /// fluid's, within cfl h of a step. Throws InstabilityError naming the body when a particle's
+  /// speed exceeds `limit` (`bound` says which bound that is) or is not a number.
+  Real max_particle_speed(Real limit, const std::string& bound, std::uint64_t step, double time) const {
+    Real fastest = 0;
+    for (const Entry& entry : bodies_) {
+      const ParticleSet<D>& set = entry.contact->particles();
+      const auto velocity = set[*entry.contact->fields().surface_velocity];
+      const auto id = set[set.id()];
+      for (std::size_t b = 0; b < set.size(); ++b) {
+        const Real speed = velocity[b].norm();
+        if (!(speed <= limit)) {
+          throw InstabilityError(id[b], "speed", static_cast<double>(speed), step, time,
+                                 "a particle of the body \"" + entry.contact->name() + "\" moves " + bound,
+                                 "Check the body's density and the time step (solver.cfl).");
+        }
+        fastest = std::max(fastest, speed);
+      }
+    }
+    return fastest;
   }
 
  private:
@@ -115,6 +145,7 @@ class RigidBodies {
   struct Entry {
     Contact<D>* contact;
     RigidBody body;
+    double release_time;
     VectorField start;
     VectorField force_field;
     VectorField contact_force_field;

@@ -133,7 +133,8 @@ class Wcsph final : public Simulation<D> {
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   TimeStep last_time_step_;
-  Real max_speed_ = 0;
+  Real max_speed_ = 0;       // of the fluid's particles
+  Real max_body_speed_ = 0;  // of the bodies' particles
   Real max_acceleration_ = 0;
   Pipeline pipeline_;
 };

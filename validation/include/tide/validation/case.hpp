@@ -4,6 +4,7 @@
 // metrics computed by the code against an analytic solution or an experiment. The registry
 // (cases()) is what `tide validate` runs and what the regression tests check at low resolution.
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -51,6 +52,10 @@ struct Case {
   std::vector<std::string> metric_notes;  // one line per metric: name and definition
   std::vector<int> resolutions;           // the study's default ladder (doubling where the cost allows)
   int test_resolution = 0;                // the low resolution the regression test runs
+  std::vector<std::string> schemes;       // the schemes it applies to (e.g. only those with bodies); empty: all
+  bool runs_scheme(std::string_view scheme) const {
+    return schemes.empty() || std::find(schemes.begin(), schemes.end(), scheme) != schemes.end();
+  }
   std::function<RunRecord(int resolution, const Variant& variant)> run;
 };
 
