@@ -220,6 +220,12 @@ void time_steps(benchmark::State& state, const scene::Scene& s, int threads, dou
     state.counters["builds/step"] = Counter(double(simulation.neighbor_builds() - builds_before) / steps);
     state.counters["fluid"] = Counter(fluid);
     state.counters["walls/fluid"] = Counter(double(simulation.interactions().contact_particle_count()) / fluid);
+    // What a body costs per body particle: (1/rate_on − 1/rate_off) × fluid / body_particles
+    // between a feature's rows (docs/performance.md).
+    double body_particles = 0;
+    if (const auto* bodies = simulation.bodies())
+      for (std::size_t k = 0; k < bodies->size(); ++k) body_particles += double(bodies->contact(k).particles().size());
+    state.counters["body_particles"] = Counter(body_particles);
     state.counters["threads"] = Counter(double(tide::thread_count()));
     state.counters["cpu_util"] = Counter(cpu_seconds / (wall_seconds * threads));
   } catch (const std::exception& error) {

@@ -59,15 +59,18 @@ void check_surface_tension(const scene::Scene& scene, std::size_t fluids) {
 }
 
 /// Rigid bodies (obstacles with a "body") feel the WCSPH momentum pass's pressure and viscous
-/// forces of one fluid (passes/body_force.hpp): not yet the incompressible schemes' pressure
-/// solve, the multiphase form or the artificial stress.
-void check_bodies(const scene::Scene& scene, std::size_t fluids) {
+/// forces, of one fluid or several (passes/body_force.hpp): not yet the incompressible schemes'
+/// pressure solve, the artificial stress, or surface tension, whose adhesion to walls would act
+/// on the fluid without its reaction on the body.
+void check_bodies(const scene::Scene& scene) {
   for (std::size_t k = 0; k < scene.walls.obstacles.size(); ++k) {
     if (!scene.walls.obstacles[k].body) continue;
     const std::string path = "/walls/obstacles/" + std::to_string(k) + "/body";
     if (scene.solver.scheme != scene::Scheme::wcsph)
       refuse(scene, "/solver/scheme", "\"wcsph\" with a rigid body (" + path + ")", quoted_scheme(scene.solver.scheme));
-    if (fluids > 1) refuse(scene, path, "a body in a scene of one fluid material", std::to_string(fluids) + " fluids");
+    if (scene.solver.surface_tension.model != scene::SurfaceTensionModel::none)
+      refuse(scene, "/solver/surface_tension/model", "\"none\" in a scene with a rigid body (" + path + ")",
+             "a surface-tension model");
     if (scene.solver.artificial_stress > 0)
       refuse(scene, "/solver/artificial_stress", "0 in a scene with a rigid body (" + path + ")",
              setup::format_number(scene.solver.artificial_stress));
@@ -80,7 +83,7 @@ void check_capabilities(const scene::Scene& scene) {
   const std::size_t fluids = scene::fluid_material_count(scene);
   check_phases(scene, fluids);
   check_surface_tension(scene, fluids);
-  check_bodies(scene, fluids);
+  check_bodies(scene);
   // The phase index exists in multiphase scenes only.
   for (std::size_t k = 0; k < scene.output.fields.size(); ++k) {
     if (scene.output.fields[k] == "phase" && fluids < 2)

@@ -16,13 +16,17 @@
 namespace tide::passes {
 
 /// F_b = −Σ_j m_j a_jb for every particle b of `body`, where a_jb is the acceleration the
-/// momentum pass gives fluid particle j from b: a_jb = −m_b (p_j/ρ_j² + p_b/ρ_b²) ∇W_jb plus, for a
-/// no-slip body, the viscous term of detail::viscous_coefficient with b's mirrored velocity. A
-/// gather over b's fluid neighbours (∇W_jb = −∇W_bj), stored in `force`. The one-fluid,
-/// no-artificial-stress form of the momentum pass: the scene checks refuse bodies with the others.
+/// momentum pass gives fluid particle j from b. With one fluid: a_jb = −m_b (p_j/ρ_j² + p_b/ρ_b²)
+/// ∇W_jb plus, for a no-slip body, the viscous term of detail::viscous_coefficient with b's
+/// mirrored velocity. With several fluids (`phases`), the number-density form of Hu & Adams 2006
+/// (eq. 8): a_jb = −(1/m_j) (p_j V_j² + p_b V_b²) ∇W_jb, V_b the wall volume, plus the laminar
+/// term of detail::multiphase_viscous_term with j's viscosity (the wall takes the viscosity of the
+/// fluid beside it), or the artificial one as with one fluid. A gather over b's fluid neighbours
+/// (∇W_jb = −∇W_bj), stored in `force`. The scene checks refuse bodies with the artificial stress.
 template <int D>
 void body_force(const RuntimeKernel<D>& kernel, const ViscositySettings& settings, const Contact<D>& body,
-                const ParticleSet<D>& fluid, const FluidFields<D>& f, VectorView<D> force) {
+                const ParticleSet<D>& fluid, const FluidFields<D>& f, VectorView<D> force,
+                const MultiphaseTerms* phases = nullptr) {
   const auto x = fluid[f.position];
   const auto v = fluid[f.velocity];
   const auto mass = fluid[f.mass];
@@ -34,7 +38,7 @@ void body_force(const RuntimeKernel<D>& kernel, const ViscositySettings& setting
   const auto body_density = set[w.density];
   const auto body_pressure = set[w.pressure];
   const ConstVectorView<D> body_velocity = body.viscous() ? set[*w.velocity] : ConstVectorView<D>{};
-  const auto run = [&]<scene::ViscosityModel Model, bool Viscous>() {
+  const auto run = [&]<scene::ViscosityModel Model, bool Viscous, bool Multiphase>() {
     for_each_contact_particle<D>(
         body, x, VectorOutput<D>{force}, [&](std::size_t b, const FluidNeighborsOf<D>& fluid_neighbors) {
           const Real m_b = body_mass[b];
@@ -53,12 +57,28 @@ void body_force(const RuntimeKernel<D>& kernel, const ViscositySettings& setting
                   x_jb[d] = -run.x_ij[d][k];
                   grad_w[d] = -grad_w_bj[d];
                 }
-                Vector<D> a_jb = -(m_b * (pressure[j] / (rho_j * rho_j) + p_over_rho2_b)) * grad_w;
+                [[maybe_unused]] Real inverse_mass_j = 0, vj2 = 0, vb2 = 0;
+                Vector<D> a_jb;
+                if constexpr (Multiphase) {
+                  inverse_mass_j = 1 / mass[j];
+                  const Real volume_j = mass[j] / rho_j;
+                  vj2 = volume_j * volume_j;
+                  vb2 = phases->wall_volume * phases->wall_volume;
+                  a_jb = -(inverse_mass_j * (pressure[j] * vj2 + body_pressure[b] * vb2)) * grad_w;
+                } else {
+                  a_jb = -(m_b * (pressure[j] / (rho_j * rho_j) + p_over_rho2_b)) * grad_w;
+                }
                 if constexpr (Viscous) {
                   const Vector<D> v_jb = v[j] - body_velocity[b];
-                  const Real coefficient = detail::viscous_coefficient<Model>(settings, m_b, rho_j, rho_b,
-                                                                              v_jb.dot(x_jb), x_jb.dot(grad_w), r2);
-                  a_jb += coefficient * (Model == scene::ViscosityModel::artificial ? grad_w : v_jb);
+                  if constexpr (Multiphase && Model == scene::ViscosityModel::laminar) {
+                    const Real eta_j = phases->dynamic_viscosity[phases->phase[j]];
+                    a_jb += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_j, eta_j, eta_j,
+                                                               vj2 + vb2, v_jb, x_jb, r2, grad_w);
+                  } else {
+                    const Real coefficient = detail::viscous_coefficient<Model>(settings, m_b, rho_j, rho_b,
+                                                                                v_jb.dot(x_jb), x_jb.dot(grad_w), r2);
+                    a_jb += coefficient * (Model == scene::ViscosityModel::artificial ? grad_w : v_jb);
+                  }
                 }
                 total -= mass[j] * a_jb;
               }
@@ -67,13 +87,20 @@ void body_force(const RuntimeKernel<D>& kernel, const ViscositySettings& setting
           return total;
         });
   };
+  const auto run_for_fluids = [&]<scene::ViscosityModel Model, bool Viscous>() {
+    if (phases != nullptr) {
+      run.template operator()<Model, Viscous, true>();
+    } else {
+      run.template operator()<Model, Viscous, false>();
+    }
+  };
   const bool artificial = settings.model == scene::ViscosityModel::artificial;
   if (!body.viscous()) {
-    run.template operator()<scene::ViscosityModel::artificial, false>();
+    run_for_fluids.template operator()<scene::ViscosityModel::artificial, false>();
   } else if (artificial) {
-    run.template operator()<scene::ViscosityModel::artificial, true>();
+    run_for_fluids.template operator()<scene::ViscosityModel::artificial, true>();
   } else {
-    run.template operator()<scene::ViscosityModel::laminar, true>();
+    run_for_fluids.template operator()<scene::ViscosityModel::laminar, true>();
   }
 }
 
