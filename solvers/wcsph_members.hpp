@@ -389,7 +389,7 @@ void Wcsph<D>::check_state() {
   max_speed_ = maxima.speed;
   max_acceleration_ = maxima.acceleration;
   if (!bodies_.empty())
-    max_body_speed_ = bodies_.max_particle_speed(limits.max_speed, limits.speed_bound, step_count_, time_);
+    max_body_speed_ = bodies_.checked_max_particle_speed(limits.max_speed, limits.speed_bound, step_count_, time_);
 }
 
 template <int D>

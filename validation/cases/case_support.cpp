@@ -31,6 +31,27 @@ void apply_variant(scene::Scene& scene, const Variant& variant) {
   scene.walls.layers = scene::required_wall_layers(scene.kernel, scene.smoothing_ratio);
 }
 
+scene::Scene water_tank(int dimension, double width, double depth, double rim, double spacing,
+                        const scene::Material& water, const Variant& variant) {
+  scene::Scene s;
+  s.dimension = dimension;
+  s.particle_spacing = spacing;
+  s.materials.push_back(water);
+  const int up = dimension - 1;
+  scene::Vec top{width, width, width}, wall_top{width, width, width};
+  top[up] = depth;
+  wall_top[up] = rim;
+  if (dimension == 2) top[2] = wall_top[2] = 0;
+  s.fluid.push_back({0, scene::Box{{0, 0, 0}, top}});
+  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, wall_top}, true};
+  apply_variant(s, variant);
+  s.domain = scene::domain_around(*s.walls.container, s.walls.layers * spacing, dimension);
+  s.gravity = {0, 0, 0};
+  s.gravity[up] = -9.81;
+  s.solver.alpha = 0.1;
+  return s;
+}
+
 Curve read_reference(const std::string& file, int x_column, int y_column) {
   const std::string path = std::string(TIDE_VALIDATION_DATA_DIR) + "/" + file;
   std::ifstream in(path);

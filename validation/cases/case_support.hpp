@@ -23,6 +23,12 @@ double smoothing_ratio_for(KernelType kernel);
 /// Throws std::invalid_argument for an unknown scheme.
 void apply_variant(scene::Scene& scene, const Variant& variant);
 
+/// Water (`water`) `depth` deep at rest in an open tank `width` wide (square in 3D) with walls
+/// `rim` high, under gravity 9.81 m/s² down the last axis, spacing `spacing`, the variant applied,
+/// the domain round the walls and Monaghan α = 0.1 against the start-up waves.
+scene::Scene water_tank(int dimension, double width, double depth, double rim, double spacing,
+                        const scene::Material& water, const Variant& variant);
+
 /// Reads columns `x_column` and `y_column` of a reference CSV in validation/data ('#' lines are
 /// its source header; the first other line names the columns).
 Curve read_reference(const std::string& file, int x_column = 0, int y_column = 1);

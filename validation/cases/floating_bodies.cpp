@@ -17,23 +17,8 @@ constexpr double water_density = 1000;
 // Water `depth` deep in a tank `width` wide (square in 3D) and twice as high.
 scene::Scene tank(int dimension, double width, double depth, double spacing, double sound_speed,
                   const Variant& variant) {
-  scene::Scene s;
-  s.dimension = dimension;
-  s.particle_spacing = spacing;
-  s.materials.push_back({"water", water_density, 1e-6, sound_speed, std::nullopt});
-  const int up = dimension - 1;
-  scene::Vec top{width, width, width}, rim{width, width, width};
-  top[up] = depth;
-  rim[up] = 2 * depth;
-  if (dimension == 2) top[2] = rim[2] = 0;
-  s.fluid.push_back({0, scene::Box{{0, 0, 0}, top}});
-  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, rim}, true};
-  apply_variant(s, variant);
-  s.domain = scene::domain_around(*s.walls.container, s.walls.layers * spacing, dimension);
-  s.gravity = {0, 0, 0};
-  s.gravity[up] = -gravity;
-  s.solver.alpha = 0.1;  // damps the waves the body makes as it settles
-  return s;
+  return water_tank(dimension, width, depth, 2 * depth, spacing,
+                    {"water", water_density, 1e-6, sound_speed, std::nullopt}, variant);
 }
 
 // The box: B wide, H = B/2 high, ρ_b/ρ_f = 1/2, so its metacentric height

@@ -23,26 +23,14 @@ Tank tank(int dimension) { return dimension == 2 ? Tank{0.5, 7.0} : Tank{0.2, 2.
 scene::Scene tank_scene(int dimension, int rows, const Variant& variant) {
   const Tank t = tank(dimension);
   const double width = t.height;
-  scene::Scene s;
+  scene::Scene s = water_tank(dimension, width, t.height, 1.5 * t.height, t.height / rows,
+                              {"water", rest_density, 1e-6, std::nullopt, std::sqrt(2 * gravity * t.height)}, variant);
   s.source = "hydrostatic tank";
-  s.dimension = dimension;
-  s.particle_spacing = t.height / rows;
-  s.materials.push_back({"water", rest_density, 1e-6, std::nullopt, std::sqrt(2 * gravity * t.height)});
   const int up = dimension - 1;
-  scene::Vec top{width, width, width};
-  top[up] = t.height;
-  s.fluid.push_back({0, scene::Box{{0, 0, 0}, top}});
-  scene::Vec rim = top;
-  rim[up] = 1.5 * t.height;
-  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, rim}, true};
-  apply_variant(s, variant);
   const double margin = s.walls.layers * s.particle_spacing;
   s.domain.box = {{-margin, -margin, -margin}, {width + margin, width + margin, width + margin}};
   s.domain.box.max[up] = 3 * t.height;
   if (dimension == 2) s.domain.box.min[2] = s.domain.box.max[2] = 0;
-  s.gravity = {0, 0, 0};
-  s.gravity[up] = -gravity;
-  s.solver.alpha = 0.1;  // damps the start-up oscillation of the column
   if (dimension == 3) s.solver.gravity_ramp_time = 0.5;
   return s;
 }

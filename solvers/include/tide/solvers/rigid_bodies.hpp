@@ -117,7 +117,7 @@ class RigidBodies {
   /// The largest speed of a body particle, as last placed: the time step keeps it, as the
   /// fluid's, within cfl h of a step. Throws InstabilityError naming the body when a particle's
   /// speed exceeds `limit` (`bound` says which bound that is) or is not a number.
-  Real max_particle_speed(Real limit, const std::string& bound, std::uint64_t step, double time) const {
+  Real checked_max_particle_speed(Real limit, const std::string& bound, std::uint64_t step, double time) const {
     Real fastest = 0;
     for (const Entry& entry : bodies_) {
       const ParticleSet<D>& set = entry.contact->particles();
