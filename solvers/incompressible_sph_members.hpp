@@ -418,7 +418,9 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
 template <int D>
 StepReport IncompressibleSph<D>::step() {
   StepContext context;
-  context.report.time_step = choose_time_step(time_step_rule_, max_speed_, max_acceleration_);
+  // The CFL limit counts the moving walls' particles as the fluid's (a fan's tips).
+  context.report.time_step =
+      choose_time_step(time_step_rule_, std::max(max_speed_, moving_walls_.max_particle_speed()), max_acceleration_);
   context.dt = context.report.time_step.dt;
   pipeline_.run(context);
   return context.report;

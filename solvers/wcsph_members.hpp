@@ -307,9 +307,10 @@ void Wcsph<D>::compute_density_rate(const Vector<D>& gravity) {
 template <int D>
 StepReport Wcsph<D>::step() {
   StepContext context;
-  // The acoustic limit counts the bodies' particles as the fluid's (a falling body meeting still water).
-  context.report.time_step =
-      choose_time_step(time_step_rule_, std::max(max_speed_, max_body_speed_), max_acceleration_);
+  // The acoustic limit counts the bodies' and the moving walls' particles as the fluid's (a falling
+  // body meeting still water, a fan's tips).
+  const Real fastest = std::max({max_speed_, max_body_speed_, moving_walls_.max_particle_speed()});
+  context.report.time_step = choose_time_step(time_step_rule_, fastest, max_acceleration_);
   last_time_step_ = context.report.time_step;
   context.dt = context.report.time_step.dt;
   pipeline_.run(context);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -79,7 +80,18 @@ class MovingWalls {
   /// would drop it).
   void move_to(double tau, std::uint64_t step, double time) {
     for (const Wall& wall : walls_) move(wall, pose_at(wall.motion, tau), step, time);
+    max_particle_speed_ = 0;
+    for (const Wall& wall : walls_) {
+      const ParticleSet<D>& set = wall.contact->particles();
+      const auto velocity = set[*wall.contact->fields().surface_velocity];
+      for (std::size_t b = 0; b < set.size(); ++b)
+        max_particle_speed_ = std::max(max_particle_speed_, velocity[b].norm());
+    }
   }
+
+  /// The largest speed of a moving wall's particle where move_to() last put them: the time step
+  /// keeps it, as the fluid's, within cfl h of a step (a fan's tips outrunning the water).
+  Real max_particle_speed() const { return max_particle_speed_; }
 
  private:
   struct Wall {
@@ -97,6 +109,7 @@ class MovingWalls {
 
   GridDomain<D> domain_;
   std::vector<Wall> walls_;
+  Real max_particle_speed_ = 0;
 };
 
 }  // namespace tide
