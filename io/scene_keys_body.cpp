@@ -6,7 +6,7 @@
 namespace tide::io {
 
 std::span<const Key<scene::Body>> body_keys() {
-  static constexpr std::array<Key<scene::Body>, 3> keys{{
+  static constexpr std::array<Key<scene::Body>, 4> keys{{
       {"density", "number > 0", "kg/m³", "",
        "The body's uniform density; its mass, centre of mass and inertia follow from its shape (in 2D, per metre "
        "of depth).",
@@ -24,6 +24,14 @@ std::span<const Key<scene::Body>> body_keys() {
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Body& body) {
          body.release_time = values.number(value, non_negative);
+       }},
+      {"applied_force", "vector", "N (2D: N/m)", "`[0, 0, 0]`",
+       "A constant force on the body at its centre of mass, besides gravity and the fluid's: a tow, or a body's "
+       "weight less its buoyancy where the scene leaves gravity, and with it the hydrostatic pressure, out (a body "
+       "settling slowly through a viscous fluid: docs/bodies.md).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Body& body) {
+         body.applied_force = values.vector(value);
        }},
   }};
   return keys;

@@ -126,7 +126,7 @@ std::span<const Key<scene::Obstacle>> obstacle_keys() {
            values.fail(value, "no motion on an obstacle with a velocity (the motion gives its surface velocity)");
          obstacle.motion = read_motion(values, value);
        }},
-      {"body", "object: `density`, `constraints`", "–", "none",
+      {"body", "object: `density`, `constraints`, `release_time`, `applied_force`", "–", "none",
        "A rigid body moved by the fluid's forces and gravity (docs/bodies.md): a box, ball or mesh. Not with "
        "`velocity` or `motion`.",
        Presence::optional,

@@ -150,7 +150,7 @@ void add_body(const scene::Scene& scene, std::size_t k, const ParticleSamples<D>
       add_moving_contact<D>(scene, k, samples, mass, rest_density, interactions, {"fluid_force", "contact_force"});
   if (!added.contact) return;
   bodies.add(*added.contact, RigidBody(properties, obstacle.body->constraints, D), obstacle.body->release_time,
-             added.start, added.contact->particles().vector("fluid_force"),
+             to_eigen(obstacle.body->applied_force), added.start, added.contact->particles().vector("fluid_force"),
              added.contact->particles().vector("contact_force"));
 }
 

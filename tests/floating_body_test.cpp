@@ -152,6 +152,27 @@ TEST(FloatingBody, BodyOutsideTheSpeedBandIsNamed) {
   }
 }
 
+// body.applied_force pulls at the centre of mass as gravity would: a box in air, away from the
+// water, without gravity, gains F t / M, exactly as a body under g = F/M (velocity Verlet is exact
+// for a constant force), and does not turn.
+TEST(FloatingBody, AppliedForceAcceleratesTheBodyAsGravityWould) {
+  scene::Scene s = floating_box();
+  s.gravity = {0, 0, 0};
+  scene::Obstacle& obstacle = s.walls.obstacles[0];
+  std::get<scene::Box>(obstacle.shape).min[1] += 0.2;
+  std::get<scene::Box>(obstacle.shape).max[1] += 0.2;
+  scene::Body& box = *obstacle.body;
+  box.applied_force = {3.0, 4.0, 0};
+  const double mass = box.density * box_width * box_height;
+  Wcsph<2> simulation(s);
+  const RigidBody& body = simulation.bodies()->body(0);
+  while (simulation.time() < 0.01) simulation.step();
+  const double t = simulation.time();
+  EXPECT_NEAR(body.velocity().x(), 3.0 / mass * t, 1e-9);
+  EXPECT_NEAR(body.velocity().y(), 4.0 / mass * t, 1e-9);
+  EXPECT_EQ(body.angular_velocity().z(), 0.0);
+}
+
 // No gravity, every axis periodic, fluid streaming past a disc at rest: the fluid's momentum
 // Σ m_i v_i plus the body's M V stays what it was, to round-off, while the flow drags the disc.
 scene::Scene periodic_box_with_disc() {

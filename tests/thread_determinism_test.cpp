@@ -208,24 +208,32 @@ TEST(ThreadDeterminism, DamBreakIntoATurningPaddleIsBitwiseIdentical) {
 }
 
 // The dam break carries a light box from inside its column (a rigid body: the body-force pass and the
-// fixed-order sum of its particles' forces), with the body's state compared too.
+// fixed-order sum of its particles' forces), with the body's state compared too; then the same with
+// oil of 800 kg/m³ over the column's lower half (the multiphase body force).
 TEST(ThreadDeterminism, DamBreakCarryingALightBoxIsBitwiseIdentical) {
-  const auto state = [](int threads) {
-    const ThreadLimit limit(threads);
-    scene::Scene s = small_dam_break_2d();
-    scene::Obstacle box;
-    box.shape = scene::Box{{0.05, 0.25, 0}, {0.15, 0.29, 0}};
-    box.body = scene::Body{400, {}};
-    s.walls.obstacles.push_back(box);
-    Wcsph<2> simulation(s);
-    std::vector<Real> values = state_after_steps(simulation, 200);
-    const RigidBody& body = simulation.bodies()->body(0);
-    for (const double x : {body.centre().x(), body.centre().y(), body.orientation().z(), body.orientation().w(),
-                           body.velocity().x(), body.velocity().y(), body.angular_momentum().z()})
-      values.push_back(static_cast<Real>(x));
-    return values;
-  };
-  EXPECT_TRUE(same_bytes(state(1), state(2)));
+  for (bool two_fluids : {false, true}) {
+    SCOPED_TRACE(two_fluids ? "two fluids" : "one fluid");
+    const auto state = [two_fluids](int threads) {
+      const ThreadLimit limit(threads);
+      scene::Scene s = small_dam_break_2d();
+      if (two_fluids) {
+        s.materials.push_back({"oil", 800, 1e-5, std::nullopt, 2.0});
+        s.fluid.push_back({1, scene::Box{{0, 0.2, 0}, {0.2, 0.4, 0}}});
+      }
+      scene::Obstacle box;
+      box.shape = scene::Box{{0.05, 0.25, 0}, {0.15, 0.29, 0}};
+      box.body = scene::Body{400, {}};
+      s.walls.obstacles.push_back(box);
+      Wcsph<2> simulation(s);
+      std::vector<Real> values = state_after_steps(simulation, 200);
+      const RigidBody& body = simulation.bodies()->body(0);
+      for (const double x : {body.centre().x(), body.centre().y(), body.orientation().z(), body.orientation().w(),
+                             body.velocity().x(), body.velocity().y(), body.angular_momentum().z()})
+        values.push_back(static_cast<Real>(x));
+      return values;
+    };
+    EXPECT_TRUE(same_bytes(state(1), state(2)));
+  }
 }
 
 // The inflow buffer of a pseudo-periodic channel, whose fluid crosses the periodic seam.

@@ -213,5 +213,15 @@ TEST(ValidationCases, NeutrallyBuoyantBodiesStayNearWhereTheyAreLetGo) {
   EXPECT_LT(metric(run_at_test_resolution("neutral_ball"), "drift_over_spacing"), 1.37);
 }
 
+// A cylinder settling at low Reynolds number (issue 35, 6e: its analytic drag within 10%):
+// midway between walls 8 radii away, its mean speed over 1.5-3.5 s against Faxén's Stokes drag.
+// 8 particles across: 2.8% fast (Re = 0.04), within the issue's bound (docs/validation-settling.md).
+TEST(ValidationCases, SettlingCylinderMeetsFaxensDrag) {
+  const RunRecord r = run_at_test_resolution("settling_cylinder");
+  EXPECT_LT(metric(r, "speed_error"), 0.10);
+  EXPECT_LT(metric(r, "reynolds_number"), 0.1) << "Stokes flow";
+  EXPECT_LT(metric(r, "sideways_over_spacing"), 0.1) << "it falls straight";
+}
+
 }  // namespace
 }  // namespace tide::validation

@@ -20,7 +20,8 @@ const std::vector<Case>& cases() {
                                      floating_box_case(2),
                                      floating_box_case(3),
                                      neutral_body_case(false),
-                                     neutral_body_case(true)};
+                                     neutral_body_case(true),
+                                     settling_cylinder_case()};
   return all;
 }
 

@@ -93,5 +93,6 @@ Case dam_break_3d_case();
 Case lid_driven_cavity_case(int reynolds);
 Case floating_box_case(int dimension);
 Case neutral_body_case(bool ball);
+Case settling_cylinder_case();
 
 }  // namespace tide::validation

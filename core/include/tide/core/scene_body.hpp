@@ -22,7 +22,8 @@ struct BodyConstraints {
 struct Body {
   double density = 0;  // kg/m³
   BodyConstraints constraints;
-  double release_time = 0;  // s: held where it starts, at rest, in the steps that begin before this time
+  double release_time = 0;                // s: held where it starts, at rest, in the steps that begin before this time
+  std::array<double, 3> applied_force{};  // N (2D: N per metre of depth), constant, at the centre of mass
 };
 
 /// How bodies touch one another and the walls: a spring and dashpot along the line between two

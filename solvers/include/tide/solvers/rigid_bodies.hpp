@@ -31,12 +31,15 @@ class RigidBodies {
   explicit RigidBodies(const GridDomain<D>& domain) : domain_(domain) {}
 
   /// Moves `contact` (a moving contact whose fields have a surface velocity and an acceleration)
-  /// as `body`, from `release_time` on (it is held in the steps that begin before); `start` holds
-  /// each particle's position at the start, `force` receives the fluid's force on it and
-  /// `contact_force` that of the solids it touches.
-  void add(Contact<D>& contact, RigidBody body, double release_time, VectorField start, VectorField force,
-           VectorField contact_force) {
-    bodies_.push_back({&contact, std::move(body), release_time, start, force, contact_force, {}, {}});
+  /// as `body`, from `release_time` on (it is held in the steps that begin before), with
+  /// `applied_force` at its centre of mass besides gravity; `start` holds each particle's position
+  /// at the start, `force` receives the fluid's force on it and `contact_force` that of the solids
+  /// it touches.
+  void add(Contact<D>& contact, RigidBody body, double release_time, const Eigen::Vector3d& applied_force,
+           VectorField start, VectorField force, VectorField contact_force) {
+    const Eigen::Vector3d applied_acceleration = applied_force / body.mass_properties().mass;
+    bodies_.push_back(
+        {&contact, std::move(body), release_time, applied_acceleration, start, force, contact_force, {}, {}});
   }
 
   bool empty() const { return bodies_.empty(); }
@@ -146,6 +149,7 @@ class RigidBodies {
     Contact<D>* contact;
     RigidBody body;
     double release_time;
+    Eigen::Vector3d applied_acceleration;  // the applied force over the mass: it acts as gravity does
     VectorField start;
     VectorField force_field;
     VectorField contact_force_field;
@@ -175,8 +179,9 @@ class RigidBodies {
   }
 
   static void kick_body(Entry& entry, double half_dt, const Eigen::Vector3d& g) {
-    entry.body.kick(entry.fluid.force + entry.solids.force + entry.body.gravity_force(g),
-                    entry.fluid.torque + entry.solids.torque + entry.body.gravity_torque(g), half_dt);
+    const Eigen::Vector3d pull = g + entry.applied_acceleration;
+    entry.body.kick(entry.fluid.force + entry.solids.force + entry.body.gravity_force(pull),
+                    entry.fluid.torque + entry.solids.torque + entry.body.gravity_torque(pull), half_dt);
   }
 
   void place(Entry& entry, std::uint64_t step, double time) const {
