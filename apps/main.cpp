@@ -1,5 +1,5 @@
-// The `tide` command: run, check and describe TideSPH scenes, and run the validation study, the
-// stress suite and the oil-displacement study.
+// The `tide` command: run, check and describe TideSPH scenes, turn runs into surfaces, and run the
+// validation study, the stress suite and the oil-displacement study.
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +12,7 @@
 #include "run_command.hpp"
 #include "scene_keys_command.hpp"
 #include "stress_command.hpp"
+#include "surface_command.hpp"
 #include "tide/core/config.hpp"
 #include "tide/core/large_block_release.hpp"
 #include "tide/core/parallel.hpp"
@@ -114,6 +115,24 @@ int main(int argc, char** argv) {
   oil->add_flag("--reuse", oil_options.reuse, "keep the runs in --out that reached their end time");
   oil->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
 
+  tide::app::SurfaceOptions surface_options;
+  CLI::App* surface = app.add_subcommand(
+      "surface", "turn a run's frames into fluid surfaces: PLY and OBJ meshes in 3D, SVG and CSV outlines in 2D");
+  surface->add_option("run", surface_options.run_directory, "run directory (where tide run wrote the frames)")
+      ->required();
+  surface->add_option("--frames", surface_options.frames, "frames A:B (both included), A:, :B or A (default: all)");
+  surface->add_option("--out", surface_options.output_directory, "output directory (default: RUN/surface)");
+  surface
+      ->add_option("--spacing", surface_options.particle_spacing,
+                   "particle spacing in m (default: the median nearest-neighbour distance in the first frame)")
+      ->check(CLI::PositiveNumber);
+  surface->add_option("--smoothing-ratio", surface_options.smoothing_ratio, "kernel h / spacing (default: 1.2)")
+      ->check(CLI::PositiveNumber);
+  surface->add_option("--cell-ratio", surface_options.cell_ratio, "grid cell / spacing (default: 0.5)")
+      ->check(CLI::PositiveNumber);
+  surface->add_option("--threads", threads, "number of worker threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+
   std::filesystem::path keys_docs = "docs/scenes.md", keys_dictionary = "fuzz/scene.dict";
   CLI::App* scene_keys = app.add_subcommand(
       "scene-keys", "rewrite the key tables of docs/scenes.md and fuzz/scene.dict from the scene reader's tables");
@@ -145,6 +164,7 @@ int main(int argc, char** argv) {
     }
     if (*stress) return tide::app::stress(stress_options);
     if (*oil) return tide::app::oil_study(oil_options);
+    if (*surface) return tide::app::reconstruct_surfaces(surface_options);
     if (*scene_keys) return tide::app::write_scene_keys(keys_docs, keys_dictionary);
     return info();
   } catch (const std::exception& error) {
