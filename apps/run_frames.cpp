@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <regex>
 #include <stdexcept>
+
+#include "tide/surface/particle_spacing.hpp"
 
 namespace tide::app {
 namespace {
@@ -54,6 +57,28 @@ std::vector<FrameFile> select_frames(const std::vector<FrameFile>& frames, const
     throw std::invalid_argument("--frames " + range + ": the run has frames " + std::to_string(frames.front().number) +
                                 " to " + std::to_string(frames.back().number) + " only");
   return selected;
+}
+
+FramePositions take_positions(io::Frame& frame) {
+  io::FrameDataset& position = frame.datasets.at("position");
+  return {frame.time, static_cast<int>(position.shape[1]), std::move(position.values)};
+}
+
+double particle_spacing(const FrameSelection& selection, const FrameFile& first_frame) {
+  if (selection.particle_spacing) return *selection.particle_spacing;
+  io::Frame frame = io::read_frame(first_frame.path);
+  const FramePositions first = take_positions(frame);
+  const double spacing = first.dimension == 2 ? surface::median_neighbour_distance<2>(first.values)
+                                              : surface::median_neighbour_distance<3>(first.values);
+  std::printf("particle spacing %g m: the median nearest-neighbour distance in %s (--spacing sets it)\n", spacing,
+              first_frame.path.filename().c_str());
+  return spacing;
+}
+
+std::string numbered_file_name(const std::string& stem, std::size_t number, const std::string& extension) {
+  char digits[24];
+  std::snprintf(digits, sizeof digits, "%06zu", number);
+  return stem + "_" + digits + extension;
 }
 
 }  // namespace tide::app

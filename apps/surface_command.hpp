@@ -1,18 +1,13 @@
 #pragma once
 
-#include <filesystem>
-#include <optional>
-#include <string>
+#include "run_frames.hpp"
+#include "tide/surface/colour_field.hpp"
 
 namespace tide::app {
 
 struct SurfaceOptions {
-  std::filesystem::path run_directory;
-  std::string frames;                      // "A:B", "A:", ":B", "A" or "" (all)
-  std::filesystem::path output_directory;  // empty: <run directory>/surface
-  std::optional<double> particle_spacing;  // empty: estimated from the run's first frame
-  double smoothing_ratio = 1.2;
-  double cell_ratio = 0.5;
+  FrameSelection input;          // output directory by default <run directory>/surface
+  surface::FieldSettings field;  // its particle spacing is taken from `input`
 };
 
 /// `tide surface`: each selected frame of a run to its fluid surface, a closed triangle mesh

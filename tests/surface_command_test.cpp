@@ -10,9 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "particle_lattices.hpp"
-#include "run_command.hpp"
-#include "tide/io/frame_writer.hpp"
+#include "frame_run_fixture.hpp"
 #include "tide/io/mesh_reader.hpp"
 #include "tide/io/mesh_repair.hpp"
 #include "tide/surface/mesh_checks.hpp"
@@ -23,40 +21,9 @@ namespace {
 namespace fs = std::filesystem;
 
 using testing_support::CommandResult;
+using testing_support::run_tide;
 
-CommandResult run_tide(const std::string& arguments) { return testing_support::run_command(TIDE_COMMAND, arguments); }
-
-class SurfaceCommand : public testing::Test {
- protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("surface_command_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
-  /// A run of `frames` frames of a ball (disc) of particles, Δx = radius / 10, moving by one radius
-  /// along x per frame.
-  template <int D>
-  fs::path write_run(int frames) {
-    const double radius = 0.2, spacing = radius / 10;
-    const std::vector<double> lattice = testing_support::ball_of_particles<D>(radius, spacing);
-    ParticleSet<D> particles;
-    particles.append(lattice.size() / D);
-    io::FrameWriter<D> writer(directory_ / "run", {"position"});
-    for (int frame = 0; frame < frames; ++frame) {
-      const VectorView<D> position = particles[particles.position()];
-      for (std::size_t i = 0; i < particles.size(); ++i)
-        for (int d = 0; d < D; ++d)
-          position.component[d][i] = static_cast<Real>(lattice[i * D + d] + (d == 0) * frame * radius);
-      writer.write(particles, 0.1 * frame, static_cast<std::uint64_t>(frame));
-    }
-    return directory_ / "run";
-  }
-
-  fs::path directory_;
-};
+using SurfaceCommand = testing_support::FrameRunTest;
 
 TEST_F(SurfaceCommand, ThreeDimensionalFramesBecomeClosedMeshes) {
   const fs::path run = write_run<3>(3);
