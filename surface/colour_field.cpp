@@ -114,18 +114,28 @@ SparseGrid<D> colour_field(std::span<const double> positions, const FieldSetting
           empty = empty || low[d] > high[d];
         }
         if (empty) continue;
+        // Row by row along the first axis, the other axes' share of the distance taken once a row.
+        const auto coordinate = [&](int d, int index) {
+          return grid.origin[d] + static_cast<double>(first[d] + index) * grid.cell_size;
+        };
         local = low;
         while (true) {
-          double distance_squared = 0;
-          std::size_t offset = 0;
-          for (int d = D - 1; d >= 0; --d) {
-            const double delta = grid.origin[d] + static_cast<double>(first[d] + local[d]) * grid.cell_size - x[d];
-            distance_squared += delta * delta;
-            offset = offset * static_cast<std::size_t>(grid.block_points) + static_cast<std::size_t>(local[d]);
+          double row_squared = 0;
+          std::size_t row_offset = 0;
+          for (int d = D - 1; d >= 1; --d) {
+            const double delta = coordinate(d, local[d]) - x[d];
+            row_squared += delta * delta;
+            row_offset =
+                (row_offset + static_cast<std::size_t>(local[d])) * static_cast<std::size_t>(grid.block_points);
           }
-          if (distance_squared < support_squared)
-            values[offset] += volume * kernel.value(static_cast<Real>(std::sqrt(distance_squared)));
-          int d = 0;
+          for (int i = low[0]; row_squared < support_squared && i <= high[0]; ++i) {
+            const double delta = coordinate(0, i) - x[0];
+            const double distance_squared = row_squared + delta * delta;
+            if (distance_squared < support_squared)
+              values[row_offset + static_cast<std::size_t>(i)] +=
+                  volume * kernel.value(static_cast<Real>(std::sqrt(distance_squared)));
+          }
+          int d = 1;
           for (; d < D && local[d] == high[d]; ++d) local[d] = low[d];
           if (d == D) break;
           ++local[d];
