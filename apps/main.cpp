@@ -137,6 +137,10 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   surface->add_option("--cell-ratio", surface_options.field.cell_ratio, "grid cell / spacing (default: 0.5)")
       ->check(CLI::PositiveNumber);
+  surface
+      ->add_option("--smooth", surface_options.smoothing_iterations,
+                   "Taubin smoothing iterations, which keep the volume (3D; default: 0, none)")
+      ->check(CLI::NonNegativeNumber);
   surface->add_option("--threads", threads, "number of worker threads (default: all cores)")
       ->check(CLI::PositiveNumber);
 

@@ -12,6 +12,7 @@
 #include "tide/io/frame_writer.hpp"
 #include "tide/io/mesh_repair.hpp"
 #include "tide/surface/mesh_checks.hpp"
+#include "tide/surface/mesh_smoothing.hpp"
 #include "tide/surface/surface_files.hpp"
 #include "tide/surface/surface_mesh.hpp"
 #include "tide/surface/surface_outline.hpp"
@@ -24,13 +25,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 /// One frame's surface into `directory`; a line of what it holds and how long it took.
-void reconstruct_frame(const FrameFile& frame_file, const FramePositions& frame, const surface::FieldSettings& settings,
-                       const std::filesystem::path& directory) {
+void reconstruct_frame(const FrameFile& frame_file, const FramePositions& frame, const SurfaceOptions& options,
+                       const surface::FieldSettings& settings, const std::filesystem::path& directory) {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t particles = frame.values.size() / static_cast<std::size_t>(frame.dimension);
   std::printf("frame %zu (t = %g s, %zu particles): ", frame_file.number, frame.time, particles);
   if (frame.dimension == 3) {
-    const scene::TriangleMesh mesh = surface::reconstruct_surface(frame.values, settings);
+    scene::TriangleMesh mesh = surface::reconstruct_surface(frame.values, settings);
+    surface::smooth_taubin(mesh, {.iterations = options.smoothing_iterations});
     const double seconds = seconds_since(start);
     surface::write_ply(directory / numbered_file_name("surface", frame_file.number, ".ply"), mesh);
     surface::write_obj(directory / numbered_file_name("surface", frame_file.number, ".obj"), mesh);
@@ -76,7 +78,7 @@ int reconstruct_surfaces(const SurfaceOptions& options) {
       std::cerr << "tide surface: " << error.what() << '\n';
       return exit_bad_input;
     }
-    reconstruct_frame(frame_file, frame, settings, directory);
+    reconstruct_frame(frame_file, frame, options, settings, directory);
   }
   std::printf("tide surface: %zu frame(s) written to %s\n", frames.size(), directory.c_str());
   return exit_ok;
