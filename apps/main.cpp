@@ -152,6 +152,8 @@ int main(int argc, char** argv) {
                      "field to colour by; a vector by its magnitude (default: velocity)");
   render->add_option("--colormap", render_options.colormap, "viridis, inferno or gray (default: viridis)");
   render->add_option("--size", render_options.size, "picture size WxH in pixels (default: 1280x720)");
+  render->add_flag("--surface", render_options.surface,
+                   "3D: draw the fluid surface (as tide surface reconstructs it) instead of the particles");
   render->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
 
   std::filesystem::path keys_docs = "docs/scenes.md", keys_dictionary = "fuzz/scene.dict";

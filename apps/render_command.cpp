@@ -13,9 +13,11 @@
 #include "run_frames.hpp"
 #include "tide/io/frame_writer.hpp"
 #include "tide/render/camera.hpp"
+#include "tide/render/mesh_shading.hpp"
 #include "tide/render/particle_splats.hpp"
 #include "tide/render/picture_labels.hpp"
 #include "tide/render/png_file.hpp"
+#include "tide/surface/surface_mesh.hpp"
 
 namespace tide::app {
 namespace {
@@ -27,10 +29,12 @@ struct ColouredFrame {
   std::string label;  // the field's name, |name| for a vector field's magnitude
 };
 
+/// The frame's positions and, unless `field` is empty, the field's values.
 ColouredFrame read_coloured_frame(const std::filesystem::path& file, const std::string& field) {
   io::Frame frame = io::read_frame(file);
   ColouredFrame result;
   result.positions = take_positions(frame);
+  if (field.empty()) return result;
   const auto found = frame.datasets.find(field);
   if (found == frame.datasets.end()) {
     std::string names;
@@ -98,9 +102,13 @@ RunExtent measure(const std::vector<FrameFile>& frames, const std::string& field
   return extent;
 }
 
+/// The colour of a surface drawn by --surface.
+constexpr render::Colour water = {0x4a, 0x90, 0xd9};
+
 }  // namespace
 
 int render_frames(const RenderOptions& options) {
+  const std::string field = options.surface ? "" : options.field;
   std::vector<FrameFile> frames;
   PictureSize size;
   std::optional<render::ColourScale> scale;
@@ -111,7 +119,9 @@ int render_frames(const RenderOptions& options) {
     frames = select_frames(all_frames, options.input.frames);
     size = parse_size(options.size);
     scale.emplace(render::ColourScale{render::Colormap(options.colormap), 0, 1});
-    extent = measure(frames, options.field);
+    extent = measure(frames, field);
+    if (options.surface && extent.dimension != 3)
+      throw std::invalid_argument("--surface draws the surfaces of 3D runs; tide surface writes a 2D run's outlines");
     scale->low = extent.low;
     scale->high = extent.high;
     spacing = particle_spacing(options.input, all_frames.front());
@@ -130,20 +140,26 @@ int render_frames(const RenderOptions& options) {
   for (const FrameFile& file : frames) {
     ColouredFrame frame;
     try {
-      frame = read_coloured_frame(file.path, options.field);
+      frame = read_coloured_frame(file.path, field);
     } catch (const std::exception& error) {
       std::cerr << "tide render: " << error.what() << '\n';
       return exit_bad_input;
     }
     render::Image image(size.width, size.height, {0xff, 0xff, 0xff});
-    render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
-                           spacing / 2);
+    if (options.surface) {
+      const scene::TriangleMesh mesh =
+          surface::reconstruct_surface(frame.positions.values, {.particle_spacing = spacing});
+      render::draw_mesh(image, camera, mesh, water);
+    } else {
+      render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
+                             spacing / 2);
+      render::draw_colour_bar(image, bar, *scale, extent.label);
+    }
     render::draw_time_stamp(image, frame.positions.time);
-    render::draw_colour_bar(image, bar, *scale, extent.label);
     render::write_png(directory / numbered_file_name("frame", file.number, ".png"), image);
   }
-  std::cout << "tide render: " << frames.size() << " PNG frame(s) of " << options.field << " in " << directory.string()
-            << '\n';
+  std::cout << "tide render: " << frames.size() << " PNG frame(s) of "
+            << (options.surface ? "the surface" : options.field) << " in " << directory.string() << '\n';
   if (assemble_movie(directory, frames.front().number, directory / "movie.mp4"))
     std::cout << "tide render: movie " << (directory / "movie.mp4").string() << '\n';
   return exit_ok;

@@ -5,23 +5,9 @@
 #include <limits>
 #include <vector>
 
+#include "lighting.hpp"
+
 namespace tide::render {
-namespace {
-
-/// Light from the upper left, somewhat behind the viewer, in picture axes (right, up, towards the
-/// viewer), unit length.
-constexpr double light[3] = {-0.4558, 0.5698, 0.6838};
-constexpr double ambient = 0.35;
-
-Colour shaded(Colour colour, double brightness) {
-  Colour result{};
-  for (int c = 0; c < 3; ++c)
-    result[c] = static_cast<std::uint8_t>(std::lround(std::min(255.0, colour[c] * brightness)));
-  return result;
-}
-
-}  // namespace
-
 void draw_particles(Image& image, const Camera& camera, int dimension, std::span<const double> positions,
                     std::span<const double> values, const ColourScale& scale, double radius) {
   const double radius_pixels = std::max(1.0, radius * camera.pixels_per_metre);
@@ -51,8 +37,7 @@ void draw_particles(Image& image, const Camera& camera, int dimension, std::span
         double& nearest = depth[static_cast<std::size_t>(y - region.top) * region.width + (x - region.left)];
         if (surface_depth >= nearest) continue;
         nearest = surface_depth;
-        const double lambert = std::max(0.0, sx * light[0] + sy * light[1] + sz * light[2]);
-        image.at(x, y) = shaded(colour, ambient + (1 - ambient) * lambert);
+        image.at(x, y) = lit(colour, sx * light_direction[0] + sy * light_direction[1] + sz * light_direction[2]);
       }
     }
   }

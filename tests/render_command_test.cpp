@@ -61,6 +61,21 @@ TEST_F(RenderCommand, ThreeDimensionalFramesBecomePictures) {
   EXPECT_EQ(image.height, 720);
 }
 
+// --surface draws the reconstructed surface, one colour shaded: the ball's disc of water-blue
+// shades, and no colour bar.
+TEST_F(RenderCommand, SurfaceOfAThreeDimensionalRunIsDrawn) {
+  const fs::path run = write_run<3>(1);
+  const CommandResult result = run_tide("render --surface " + run.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const render::Image image = testing_support::read_png(run / "render" / "frame_000000.png");
+  int blue = 0;
+  for (const render::Colour& pixel : image.pixels) blue += pixel[2] > pixel[0] + 40;
+  EXPECT_GT(blue, 1000);
+  const CommandResult flat = run_tide("render --surface " + write_run<2>(1).string());
+  EXPECT_EQ(flat.exit_code, 2) << flat.output;
+  EXPECT_NE(flat.output.find("--surface draws the surfaces of 3D runs"), std::string::npos) << flat.output;
+}
+
 TEST_F(RenderCommand, BadOptionsAreRefused) {
   const fs::path run = write_run<2>(1);
   for (const auto& [options, message] : std::vector<std::pair<std::string, std::string>>{
