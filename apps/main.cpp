@@ -1,5 +1,5 @@
-// The `tide` command: run, check and describe TideSPH scenes, and run the validation study, the
-// stress suite and the oil-displacement study.
+// The `tide` command: run, check and describe TideSPH scenes, turn runs into surfaces, and run the
+// validation study, the stress suite and the oil-displacement study.
 
 #include <CLI/CLI.hpp>
 
@@ -9,9 +9,11 @@
 #include <optional>
 
 #include "oil_study_command.hpp"
+#include "render_command.hpp"
 #include "run_command.hpp"
 #include "scene_keys_command.hpp"
 #include "stress_command.hpp"
+#include "surface_command.hpp"
 #include "tide/core/config.hpp"
 #include "tide/core/large_block_release.hpp"
 #include "tide/core/parallel.hpp"
@@ -29,6 +31,17 @@ std::filesystem::path default_scene() {
     if (std::filesystem::exists(installed)) return installed;
   }
   return std::filesystem::path(TIDE_SOURCE_SCENES_DIR) / "dam_break_2d.json";
+}
+
+// The run directory, --frames, --out and --spacing of a command that turns frames into pictures.
+void add_frame_selection(CLI::App& command, tide::app::FrameSelection& selection, const std::string& folder) {
+  command.add_option("run", selection.run_directory, "run directory (where tide run wrote the frames)")->required();
+  command.add_option("--frames", selection.frames, "frames A:B (both included), A:, :B or A (default: all)");
+  command.add_option("--out", selection.output_directory, "output directory (default: RUN/" + folder + ")");
+  command
+      .add_option("--spacing", selection.particle_spacing,
+                  "particle spacing in m (default: the median nearest-neighbour distance in the first frame)")
+      ->check(CLI::PositiveNumber);
 }
 
 int info() {
@@ -58,6 +71,8 @@ int main(int argc, char** argv) {
   run->add_option("--out", run_options.output_directory, "output directory (default: runs/<scene name>)");
   run->add_option("--until", run_options.until, "end time in s, overriding the scene's");
   run->add_flag("--quiet", run_options.quiet, "no progress output");
+  bool render_after_run = false;
+  run->add_flag("--render", render_after_run, "render the frames as PNG (and MP4 with ffmpeg) at the end: tide render");
   run->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
 
   std::filesystem::path check_file;
@@ -114,6 +129,33 @@ int main(int argc, char** argv) {
   oil->add_flag("--reuse", oil_options.reuse, "keep the runs in --out that reached their end time");
   oil->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
 
+  tide::app::SurfaceOptions surface_options;
+  CLI::App* surface = app.add_subcommand(
+      "surface", "turn a run's frames into fluid surfaces: PLY and OBJ meshes in 3D, SVG and CSV outlines in 2D");
+  add_frame_selection(*surface, surface_options.input, "surface");
+  surface->add_option("--smoothing-ratio", surface_options.field.smoothing_ratio, "kernel h / spacing (default: 1.2)")
+      ->check(CLI::PositiveNumber);
+  surface->add_option("--cell-ratio", surface_options.field.cell_ratio, "grid cell / spacing (default: 0.5)")
+      ->check(CLI::PositiveNumber);
+  surface
+      ->add_option("--smooth", surface_options.smoothing_iterations,
+                   "Taubin smoothing iterations, which keep the volume (3D; default: 0, none)")
+      ->check(CLI::NonNegativeNumber);
+  surface->add_option("--threads", threads, "number of worker threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+
+  tide::app::RenderOptions render_options;
+  CLI::App* render = app.add_subcommand(
+      "render", "draw a run's frames as PNG pictures (particles coloured by a field) and, with ffmpeg, an MP4");
+  add_frame_selection(*render, render_options.input, "render");
+  render->add_option("--field", render_options.field,
+                     "field to colour by; a vector by its magnitude (default: velocity)");
+  render->add_option("--colormap", render_options.colormap, "viridis, inferno or gray (default: viridis)");
+  render->add_option("--size", render_options.size, "picture size WxH in pixels (default: 1280x720)");
+  render->add_flag("--surface", render_options.surface,
+                   "3D: draw the fluid surface (as tide surface reconstructs it) instead of the particles");
+  render->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
+
   std::filesystem::path keys_docs = "docs/scenes.md", keys_dictionary = "fuzz/scene.dict";
   CLI::App* scene_keys = app.add_subcommand(
       "scene-keys", "rewrite the key tables of docs/scenes.md and fuzz/scene.dict from the scene reader's tables");
@@ -136,7 +178,10 @@ int main(int argc, char** argv) {
     if (threads > 0) limit.emplace(threads);
     if (*run) {
       if (run_options.scene_file.empty()) run_options.scene_file = default_scene();
-      return tide::app::run_scene(run_options);
+      const int status = tide::app::run_scene(run_options);
+      if (status != tide::app::exit_ok || !render_after_run) return status;
+      render_options.input.run_directory = tide::app::run_output_directory(run_options);
+      return tide::app::render_frames(render_options);
     }
     if (*check) return tide::app::check_scene(check_file);
     if (*validate) {
@@ -145,6 +190,8 @@ int main(int argc, char** argv) {
     }
     if (*stress) return tide::app::stress(stress_options);
     if (*oil) return tide::app::oil_study(oil_options);
+    if (*render) return tide::app::render_frames(render_options);
+    if (*surface) return tide::app::reconstruct_surfaces(surface_options);
     if (*scene_keys) return tide::app::write_scene_keys(keys_docs, keys_dictionary);
     return info();
   } catch (const std::exception& error) {

@@ -381,6 +381,11 @@ std::optional<scene::Scene> load(const std::filesystem::path& file) {
 
 }  // namespace
 
+std::filesystem::path run_output_directory(const RunOptions& options) {
+  return options.output_directory.empty() ? std::filesystem::path("runs") / options.scene_file.stem()
+                                          : options.output_directory;
+}
+
 int run_scene(const RunOptions& options) {
   std::optional<scene::Scene> scene = load(options.scene_file);
   if (!scene) return exit_bad_input;
@@ -392,9 +397,7 @@ int run_scene(const RunOptions& options) {
     }
     scene->time.end = *options.until;
   }
-  const std::filesystem::path output_directory = options.output_directory.empty()
-                                                     ? std::filesystem::path("runs") / options.scene_file.stem()
-                                                     : options.output_directory;
+  const std::filesystem::path output_directory = run_output_directory(options);
   return scene->dimension == 2 ? run<2>(*scene, options, output_directory) : run<3>(*scene, options, output_directory);
 }
 

@@ -15,6 +15,9 @@ struct RunOptions {
   bool quiet = false;
 };
 
+/// Where `tide run` writes: options.output_directory, or runs/<scene file's stem> when it is empty.
+std::filesystem::path run_output_directory(const RunOptions& options);
+
 /// `tide run`: reads the scene, runs it with progress, writes frames and prints a summary.
 int run_scene(const RunOptions& options);
 

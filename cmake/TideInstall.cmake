@@ -6,8 +6,8 @@
 # if it generates any, in ${PROJECT_BINARY_DIR}/<name>/include/. A new external package that
 # its installed target needs (also a PRIVATE one: static libraries carry their link
 # dependencies) is one entry in TIDE_PACKAGE_DEPENDENCIES, as find_dependency() arguments.
-set(TIDE_LIBRARIES core neighbor solvers io)
-set(TIDE_PACKAGE_DEPENDENCIES "Eigen3 3.3 NO_MODULE" "TBB" "nlohmann_json 3.10" "HDF5 COMPONENTS C")
+set(TIDE_LIBRARIES core neighbor solvers io surface render)
+set(TIDE_PACKAGE_DEPENDENCIES "Eigen3 3.3 NO_MODULE" "TBB" "nlohmann_json 3.10" "HDF5 COMPONENTS C" "PNG")
 
 include(CMakePackageConfigHelpers)
 

@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libtbb-dev       # core: small-vector math, the parallel layer (oneTBB)
   libhdf5-dev nlohmann-json3-dev # io: output files, scene files
   libtinyobjloader-dev           # io: Wavefront OBJ meshes
+  libpng-dev                     # render: PNG frames
   libcli11-dev                   # apps: the tide command line
   libgtest-dev libbenchmark-dev  # tests/, bench/
   clang clang-format             # second compiler, formatting

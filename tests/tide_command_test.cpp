@@ -226,6 +226,17 @@ TEST_F(TideCommand, UntilOverridesTheEndTime) {
 // A scene with a rigid body gets <out>/bodies.csv and the body's frames. The box is let go in the
 // air beside the water: it falls freely, y = y0 − g t²/2, which the velocity Verlet of the body
 // follows to round-off.
+// --render draws the frames when the run ends (tide render, docs/rendering.md): one PNG per frame.
+TEST_F(TideCommand, RunRenderDrawsTheFrames) {
+  const fs::path out = directory_ / "out";
+  const CommandResult result =
+      run_tide("run --quiet --render --until 0.02 --out " + out.string() + " " + write_scene().string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  for (const char* name : {"frame_000000.png", "frame_000001.png", "frame_000002.png"})
+    EXPECT_TRUE(fs::exists(out / "render" / name)) << name << '\n' << result.output;
+  EXPECT_FALSE(fs::exists(out / "render" / "frame_000003.png"));
+}
+
 TEST_F(TideCommand, RunWritesBodies) {
   const fs::path out = directory_ / "out";
   const fs::path scene = write_scene(R"("open_top": true}},)", R"("open_top": true},

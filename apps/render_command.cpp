@@ -1,0 +1,168 @@
+#include "render_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "movie.hpp"
+#include "run_command.hpp"
+#include "run_frames.hpp"
+#include "tide/io/frame_writer.hpp"
+#include "tide/render/camera.hpp"
+#include "tide/render/mesh_shading.hpp"
+#include "tide/render/particle_splats.hpp"
+#include "tide/render/picture_labels.hpp"
+#include "tide/render/png_file.hpp"
+#include "tide/surface/surface_mesh.hpp"
+
+namespace tide::app {
+namespace {
+
+/// A frame's positions (row-major), its dimension and the values to colour its particles by.
+struct ColouredFrame {
+  FramePositions positions;
+  std::vector<double> values;
+  std::string label;  // the field's name, |name| for a vector field's magnitude
+};
+
+/// The frame's positions and, unless `field` is empty, the field's values.
+ColouredFrame read_coloured_frame(const std::filesystem::path& file, const std::string& field) {
+  io::Frame frame = io::read_frame(file);
+  ColouredFrame result;
+  result.positions = take_positions(frame);
+  if (field.empty()) return result;
+  const auto found = frame.datasets.find(field);
+  if (found == frame.datasets.end()) {
+    std::string names;
+    for (const auto& [name, dataset] : frame.datasets) names += (names.empty() ? "" : ", ") + name;
+    throw std::invalid_argument(file.string() + ": no field '" + field + "' (the frame has " + names + ")");
+  }
+  const io::FrameDataset& dataset = found->second;
+  const std::size_t count = dataset.shape[0], columns = dataset.shape.size() == 2 ? dataset.shape[1] : 1;
+  result.label = columns == 1 ? field : "|" + field + "|";
+  result.values.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    double squared = 0;
+    for (std::size_t c = 0; c < columns; ++c)
+      squared += dataset.values[i * columns + c] * dataset.values[i * columns + c];
+    result.values[i] = columns == 1 ? dataset.values[i] : std::sqrt(squared);
+  }
+  return result;
+}
+
+struct PictureSize {
+  int width = 0;
+  int height = 0;
+};
+
+PictureSize parse_size(const std::string& text) {
+  int width = 0, height = 0;
+  char end = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &end) != 2 || width < 320 || height < 240 || width > 8192 ||
+      height > 8192)
+    throw std::invalid_argument("--size " + text + ": expected WxH, from 320x240 to 8192x8192 pixels");
+  return {width, height};
+}
+
+/// What every frame shares: the box the particles stay in, the range of the field, the spacing.
+struct RunExtent {
+  render::Point3 lowest;
+  render::Point3 highest;
+  double low = std::numeric_limits<double>::infinity();
+  double high = -std::numeric_limits<double>::infinity();
+  int dimension = 0;
+  std::string label;
+};
+
+RunExtent measure(const std::vector<FrameFile>& frames, const std::string& field) {
+  RunExtent extent;
+  const double infinity = std::numeric_limits<double>::infinity();
+  extent.lowest = {infinity, infinity, infinity};
+  extent.highest = {-infinity, -infinity, -infinity};
+  for (const FrameFile& file : frames) {
+    const ColouredFrame frame = read_coloured_frame(file.path, field);
+    const FramePositions& positions = frame.positions;
+    extent.dimension = positions.dimension;
+    extent.label = frame.label;
+    for (std::size_t k = 0; k < positions.values.size(); ++k) {
+      const auto d = k % static_cast<std::size_t>(positions.dimension);
+      extent.lowest[d] = std::min(extent.lowest[d], positions.values[k]);
+      extent.highest[d] = std::max(extent.highest[d], positions.values[k]);
+    }
+    for (const double value : frame.values) {
+      extent.low = std::min(extent.low, value);
+      extent.high = std::max(extent.high, value);
+    }
+  }
+  if (extent.dimension == 2) extent.lowest[2] = extent.highest[2] = 0;
+  return extent;
+}
+
+/// The colour of a surface drawn by --surface.
+constexpr render::Colour water = {0x4a, 0x90, 0xd9};
+
+}  // namespace
+
+int render_frames(const RenderOptions& options) {
+  const std::string field = options.surface ? "" : options.field;
+  std::vector<FrameFile> frames;
+  PictureSize size;
+  std::optional<render::ColourScale> scale;
+  RunExtent extent;
+  double spacing = 0;
+  try {
+    const std::vector<FrameFile> all_frames = list_frames(options.input.run_directory);
+    frames = select_frames(all_frames, options.input.frames);
+    size = parse_size(options.size);
+    scale.emplace(render::ColourScale{render::Colormap(options.colormap), 0, 1});
+    extent = measure(frames, field);
+    if (options.surface && extent.dimension != 3)
+      throw std::invalid_argument("--surface draws the surfaces of 3D runs; tide surface writes a 2D run's outlines");
+    scale->low = extent.low;
+    scale->high = extent.high;
+    spacing = particle_spacing(options.input, all_frames.front());
+  } catch (const std::exception& error) {
+    std::cerr << "tide render: " << error.what() << '\n';
+    return exit_bad_input;
+  }
+
+  const std::filesystem::path directory =
+      options.input.output_directory.empty() ? options.input.run_directory / "render" : options.input.output_directory;
+  std::filesystem::create_directories(directory);
+  const render::PixelRegion plot = {10, 40, size.width - 170, size.height - 50};
+  const render::PixelRegion bar = {size.width - 140, 70, 24, size.height - 120};
+  const render::Camera camera = extent.dimension == 2 ? render::camera_2d(extent.lowest, extent.highest, plot)
+                                                      : render::camera_3d(extent.lowest, extent.highest, plot);
+  for (const FrameFile& file : frames) {
+    ColouredFrame frame;
+    try {
+      frame = read_coloured_frame(file.path, field);
+    } catch (const std::exception& error) {
+      std::cerr << "tide render: " << error.what() << '\n';
+      return exit_bad_input;
+    }
+    render::Image image(size.width, size.height, {0xff, 0xff, 0xff});
+    if (options.surface) {
+      const scene::TriangleMesh mesh =
+          surface::reconstruct_surface(frame.positions.values, {.particle_spacing = spacing});
+      render::draw_mesh(image, camera, mesh, water);
+    } else {
+      render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
+                             spacing / 2);
+      render::draw_colour_bar(image, bar, *scale, extent.label);
+    }
+    render::draw_time_stamp(image, frame.positions.time);
+    render::write_png(directory / numbered_file_name("frame", file.number, ".png"), image);
+  }
+  std::cout << "tide render: " << frames.size() << " PNG frame(s) of "
+            << (options.surface ? "the surface" : options.field) << " in " << directory.string() << '\n';
+  if (assemble_movie(directory, frames.front().number, directory / "movie.mp4"))
+    std::cout << "tide render: movie " << (directory / "movie.mp4").string() << '\n';
+  return exit_ok;
+}
+
+}  // namespace tide::app

@@ -1,0 +1,84 @@
+#include "run_frames.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <regex>
+#include <stdexcept>
+
+#include "tide/surface/particle_spacing.hpp"
+
+namespace tide::app {
+namespace {
+
+/// A frame number, or nothing for empty text; std::invalid_argument for anything else.
+std::optional<std::size_t> frame_number(const std::string& text, const std::string& range) {
+  if (text.empty()) return std::nullopt;
+  std::size_t number = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (error != std::errc() || end != text.data() + text.size())
+    throw std::invalid_argument("--frames " + range + ": expected A:B, A:, :B or A with frame numbers A and B");
+  return number;
+}
+
+}  // namespace
+
+std::vector<FrameFile> list_frames(const std::filesystem::path& run_directory) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(run_directory, error))
+    throw std::invalid_argument(run_directory.string() + ": no such run directory");
+  static const std::regex frame_name(R"(frames_([0-9]{6,})\.h5)");
+  std::vector<FrameFile> frames;
+  for (const auto& entry : std::filesystem::directory_iterator(run_directory)) {
+    std::smatch match;
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && std::regex_match(name, match, frame_name))
+      frames.push_back({std::stoul(match[1].str()), entry.path()});
+  }
+  if (frames.empty())
+    throw std::invalid_argument(run_directory.string() + ": no frame files (frames_NNNNNN.h5) in this directory");
+  std::sort(frames.begin(), frames.end(), [](const FrameFile& a, const FrameFile& b) { return a.number < b.number; });
+  return frames;
+}
+
+std::vector<FrameFile> select_frames(const std::vector<FrameFile>& frames, const std::string& range) {
+  const std::size_t colon = range.find(':');
+  const std::optional<std::size_t> first = frame_number(range.substr(0, colon), range);
+  const std::optional<std::size_t> last =
+      colon == std::string::npos ? first : frame_number(range.substr(colon + 1), range);
+  const std::size_t lowest = first.value_or(0), highest = last.value_or(std::numeric_limits<std::size_t>::max());
+  if (lowest > highest) throw std::invalid_argument("--frames " + range + ": the first frame is after the last");
+  std::vector<FrameFile> selected;
+  std::copy_if(frames.begin(), frames.end(), std::back_inserter(selected),
+               [&](const FrameFile& frame) { return frame.number >= lowest && frame.number <= highest; });
+  if (selected.empty())
+    throw std::invalid_argument("--frames " + range + ": the run has frames " + std::to_string(frames.front().number) +
+                                " to " + std::to_string(frames.back().number) + " only");
+  return selected;
+}
+
+FramePositions take_positions(io::Frame& frame) {
+  io::FrameDataset& position = frame.datasets.at("position");
+  return {frame.time, static_cast<int>(position.shape[1]), std::move(position.values)};
+}
+
+double particle_spacing(const FrameSelection& selection, const FrameFile& first_frame) {
+  if (selection.particle_spacing) return *selection.particle_spacing;
+  io::Frame frame = io::read_frame(first_frame.path);
+  const FramePositions first = take_positions(frame);
+  const double spacing = first.dimension == 2 ? surface::median_neighbour_distance<2>(first.values)
+                                              : surface::median_neighbour_distance<3>(first.values);
+  std::printf("particle spacing %g m: the median nearest-neighbour distance in %s (--spacing sets it)\n", spacing,
+              first_frame.path.filename().c_str());
+  return spacing;
+}
+
+std::string numbered_file_name(const std::string& stem, std::size_t number, const std::string& extension) {
+  char digits[24];
+  std::snprintf(digits, sizeof digits, "%06zu", number);
+  return stem + "_" + digits + extension;
+}
+
+}  // namespace tide::app
