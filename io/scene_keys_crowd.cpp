@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -24,8 +25,13 @@ void read_agent_groups(const ValueReader& values, const Node& node, scene::Crowd
   }
 }
 
+// Required, and not empty, unless every group walks along a heading (read before the exits).
 void read_exits(const ValueReader& values, const Node& node, scene::Crowd& crowd) {
-  for (const Node& entry : values.elements(node, 1, "a non-empty array of exits")) {
+  const bool all_headed = std::all_of(crowd.agents.begin(), crowd.agents.end(),
+                                      [](const scene::AgentGroup& group) { return group.heading.has_value(); });
+  if (all_headed && !node.present()) return;
+  const std::string expected = all_headed ? "an array of exits" : "a non-empty array of exits (a group has no heading)";
+  for (const Node& entry : values.elements(node, all_headed ? 0 : 1, expected)) {
     scene::CrowdExit exit;
     read_section(values, entry, crowd_exit_keys(), exit);
     const auto same_name = [&](const scene::CrowdExit& other) { return other.name == exit.name; };
@@ -41,8 +47,10 @@ std::span<const Key<scene::Crowd>> crowd_keys() {
   static constexpr std::array<Key<scene::Crowd>, 12> keys{{
       {"agents", "non-empty array of objects", "–", "", "Where the agents stand at the start.", Presence::required,
        read_agent_groups},
-      {"exits", "non-empty array of objects", "–", "",
-       "Regions beyond the doors: an agent entering one is removed and counted.", Presence::required, read_exits},
+      {"exits", "array of objects, not empty unless every group has a `heading`", "–", "none",
+       "Regions beyond the doors: an agent entering one is removed and counted. Required unless every group of "
+       "`agents` has a `heading`.",
+       Presence::always, read_exits},
       {"desired_speed", "object", "–", "see below", "Each agent's free walking speed, drawn once.", Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
          read_section(values, value, crowd_speed_keys(), crowd.desired_speed);
@@ -105,7 +113,7 @@ std::span<const Key<scene::Crowd>> crowd_keys() {
 }
 
 std::span<const Key<scene::AgentGroup>> crowd_agent_keys() {
-  static constexpr std::array<Key<scene::AgentGroup>, 2> keys{{
+  static constexpr std::array<Key<scene::AgentGroup>, 3> keys{{
       {"region", "[box](#box)", "m", "", "The agents stand on a square lattice centred in this box.",
        Presence::required,
        [](const ValueReader& values, const Node& value, scene::AgentGroup& group) {
@@ -114,6 +122,15 @@ std::span<const Key<scene::AgentGroup>> crowd_agent_keys() {
       {"count", "integer in [1, 1000000]", "–", "", "How many agents.", Presence::required,
        [](const ValueReader& values, const Node& value, scene::AgentGroup& group) {
          group.count = static_cast<std::size_t>(values.count(value));
+       }},
+      {"heading", "non-zero vector", "–", "to the nearest exit",
+       "A fixed desired direction (normalised) instead of the way to an exit: walkers in a periodic corridor.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::AgentGroup& group) {
+         const scene::Vec v = values.vector(value);
+         const double norm = std::hypot(v[0], v[1], v[2]);
+         if (!(norm > 0) || !std::isfinite(norm)) values.fail(value, "a non-zero vector");
+         group.heading = scene::Vec{v[0] / norm, v[1] / norm, v[2] / norm};
        }},
   }};
   return keys;

@@ -26,7 +26,7 @@ AgentStarts place_agents(const scene::Scene& scene) {
       columns = static_cast<std::size_t>(std::floor(width / spacing));
       rows = static_cast<std::size_t>(std::floor(height / spacing));
     }
-    if (spacing < 2 * crowd.body_radius) {
+    if (group.count > 1 && spacing < 2 * crowd.body_radius) {
       throw scene::SceneError(scene.source, "/crowd/agents/" + std::to_string(k) + "/count",
                               "at most as many agents as stand a body diameter (2 crowd.body_radius = " +
                                   setup::format_number(2 * crowd.body_radius) + " m) apart in the region",

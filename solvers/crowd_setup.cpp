@@ -89,7 +89,7 @@ void check_agent_starts(const scene::Scene& scene, const AgentStarts& starts, co
           "a region whose agents stand inside the domain, at least crowd.body_radius from every wall",
           "an agent at " + point_text(x) + " inside or against a wall");
     }
-    if (!std::isfinite(navigation.distance(x))) {
+    if (!scene.crowd->agents[starts.groups[n]].heading && !std::isfinite(navigation.distance(x))) {
       throw scene::SceneError(scene.source, path, "a region from which an exit (crowd.exits) can be reached",
                               "an agent at " + point_text(x) + " walled off from every exit");
     }

@@ -17,7 +17,7 @@ namespace tide::crowd_setup {
 NavigationField navigation_field(const scene::Scene& scene, const Interactions<2>& interactions);
 
 /// Throws scene::SceneError at /crowd/agents/k for the first agent inside or within a body radius
-/// of a wall (a blocked cell), or with no exit it can reach.
+/// of a wall (a blocked cell), or, in a group without a heading, with no exit it can reach.
 void check_agent_starts(const scene::Scene& scene, const AgentStarts& starts, const NavigationField& navigation);
 
 }  // namespace tide::crowd_setup

@@ -27,6 +27,13 @@ const scene::Scene& checked(const scene::Scene& scene) {
   return scene;
 }
 
+// The scene's walls as contacts of `interactions`, massless so that the crowd density counts
+// people only, then the navigation field around their particles.
+NavigationField walls_and_navigation(const scene::Scene& scene, Interactions<2>& interactions, MovingWalls<2>& moving) {
+  setup::add_wall_contacts<2>(scene, 0, 1, interactions, moving, nullptr);
+  return crowd_setup::navigation_field(scene, interactions);
+}
+
 }  // namespace
 
 CrowdSph::CrowdSph(const scene::Scene& scene)
@@ -36,8 +43,7 @@ CrowdSph::CrowdSph(const scene::Scene& scene)
       interactions_(setup::grid_domain<2>(scene), support_radius(scene),
                     setup::neighbor_skin(scene, support_radius(scene))),
       moving_walls_(setup::grid_domain<2>(scene)),
-      navigation_((setup::add_wall_contacts<2>(scene, 0, 1, interactions_, moving_walls_, nullptr),
-                   crowd_setup::navigation_field(scene, interactions_))),
+      navigation_(walls_and_navigation(scene, interactions_, moving_walls_)),
       exited_(scene.crowd->exits.size(), 0) {
   const scene::Crowd& crowd = *scene.crowd;
   const AgentStarts starts = place_agents(scene);
@@ -55,12 +61,17 @@ CrowdSph::CrowdSph(const scene::Scene& scene)
              std::nullopt,
              std::nullopt};
   desired_speed_ = agents_.add_scalar("desired_speed");
+  const bool any_heading = std::any_of(crowd.agents.begin(), crowd.agents.end(),
+                                       [](const scene::AgentGroup& group) { return group.heading.has_value(); });
+  if (any_heading) heading_ = agents_.add_vector("heading");
   auto x = agents_[fields_.position];
   const std::vector<Real> speeds = desired_speeds(crowd.desired_speed, starts.positions.size());
   for (std::size_t i = 0; i < starts.positions.size(); ++i) {
     x.set(i, starts.positions[i]);
     agents_[fields_.mass][i] = 1;  // one person: ρ = Σ_j W_ij is persons/m²
     agents_[desired_speed_][i] = speeds[i];
+    if (const auto& heading = crowd.agents[starts.groups[i]].heading)
+      agents_[*heading_].set(i, Vector<2>(static_cast<Real>((*heading)[0]), static_cast<Real>((*heading)[1])));
   }
 
   // The acoustic limit with c = sqrt(K), the speed of a small density disturbance in the
@@ -85,7 +96,7 @@ CrowdSph::CrowdSph(const scene::Scene& scene)
 Pipeline CrowdSph::build_pipeline() {
   std::vector<Stage> stages;
   stages.push_back({"kick_drift", [this](StepContext& c) { kick_drift(c.dt); }});
-  stages.push_back({"exits", [this](StepContext&) { remove_exited(); }});
+  if (!scene_.crowd->exits.empty()) stages.push_back({"exits", [this](StepContext&) { remove_exited(); }});
   stages.push_back(
       {"neighbor_search+crowd_density", [this](StepContext& c) { c.report.removed = search_and_sum_density(); }});
   stages.push_back({"crowd_forces", [this](StepContext&) { compute_acceleration(); }});
@@ -121,8 +132,21 @@ std::size_t CrowdSph::search_and_sum_density() {
 }
 
 void CrowdSph::compute_acceleration() {
-  passes::crowd_acceleration(kernel_, passes::CrowdForceSettings::of(scene_), navigation_, agents_, fields_,
-                             desired_speed_, interactions_, agents_[fields_.acceleration]);
+  const passes::CrowdForceSettings settings = passes::CrowdForceSettings::of(scene_);
+  auto acceleration = agents_[fields_.acceleration];
+  const auto toward_exit = [&](std::size_t, const Vector<2>& x) { return navigation_.direction(x); };
+  if (!heading_) {
+    passes::crowd_acceleration(kernel_, settings, toward_exit, agents_, fields_, desired_speed_, interactions_,
+                               acceleration);
+    return;
+  }
+  // A group with a heading walks along it; the others (a zero heading) toward their exit.
+  const auto heading = std::as_const(agents_)[*heading_];
+  const auto headed = [&](std::size_t i, const Vector<2>& x) {
+    const Vector<2> e = heading[i];
+    return e.squaredNorm() > 0 ? e : toward_exit(i, x);
+  };
+  passes::crowd_acceleration(kernel_, settings, headed, agents_, fields_, desired_speed_, interactions_, acceleration);
 }
 
 void CrowdSph::kick_drift(Real dt) {

@@ -89,6 +89,18 @@ TEST(CrowdScene, FluidKeysAndOtherSchemesAreRefused) {
   EXPECT_EQ(refusal_path(replaced(json, R"("scheme": "crowd")", R"("scheme": "wcsph")")), "/solver/scheme");
 }
 
+// A corridor's walkers follow a heading and need no exit; a group without one does.
+TEST(CrowdScene, ExitsMayBeLeftOutOnlyWhenEveryGroupHasAHeading) {
+  const std::string json = test::crowd_room_json({});
+  const std::size_t from = json.find(R"(, "exits": [)");
+  const std::size_t to = json.find(R"(, "desired_speed")");
+  const std::string no_exits = std::string(json).replace(from, to - from, "");
+  EXPECT_EQ(refusal_path(no_exits), "/crowd/exits");
+  const std::string headed = replaced(no_exits, R"("count": 20})", R"("count": 20, "heading": [1, 0]})");
+  EXPECT_EQ(refusal_path(headed), "(accepted)");
+  EXPECT_EQ(refusal_path(replaced(headed, R"("heading": [1, 0])", R"("heading": [0, 0])")), "/crowd/agents/0/heading");
+}
+
 TEST(CrowdScene, ThreeDimensionsAreRefused) {
   const std::string json = R"({"dimension": 3, "particle_spacing": 0.1,
     "crowd": {"agents": [{"region": {"min": [1, 1, 0], "max": [2, 2, 1]}, "count": 1}],

@@ -11,7 +11,6 @@
 #include "neighbor_walk.hpp"
 #include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/scene.hpp"
-#include "tide/solvers/navigation_field.hpp"
 #include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
@@ -48,13 +47,14 @@ struct CrowdForceSettings {
 
 /// a_i = (v0_i e_i − v_i)/τ (Helbing & Molnár 1995, eq. 2)
 ///       − Σ_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3, with m_j = 1 person)
-///       + Σ_j f(2r − |x_ij|) x_ij/|x_ij| + f(r − d_iW) n_iW (Helbing, Farkas & Vicsek 2000, eqs. 2, 3)
-/// with e_i the navigation direction at x_i, and d_iW, n_iW the distance to and the normal from
-/// the nearest wall surface, taken from the nearest wall particle of each wall contact.
-inline void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings& settings,
-                               const NavigationField& navigation, const ParticleSet<2>& agents, const FluidFields<2>& f,
-                               ScalarField desired_speed, const Interactions<2>& interactions,
-                               VectorView<2> acceleration) {
+///       + Σ_j f(|x_ij| − 2r) x_ij/|x_ij| + f(d_iW − r) n_iW (Helbing, Farkas & Vicsek 2000, eqs. 2, 3)
+/// with e_i = direction(i, x_i), the agent's desired direction, and d_iW, n_iW the distance to
+/// and the normal from the nearest wall surface, taken from the nearest wall particle of each
+/// wall contact.
+template <class Direction>
+void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings& settings, const Direction& direction,
+                        const ParticleSet<2>& agents, const FluidFields<2>& f, ScalarField desired_speed,
+                        const Interactions<2>& interactions, VectorView<2> acceleration) {
   const auto x = agents[f.position];
   const auto v = agents[f.velocity];
   const auto rho = agents[f.density];
@@ -62,7 +62,7 @@ inline void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceS
   const auto v0 = agents[desired_speed];
   const Real contact_distance = 2 * settings.body_radius;
   for_each_fluid_particle<2>(interactions, x, VectorOutput<2>{acceleration}, [&](std::size_t i, const auto& neighbors) {
-    Vector<2> a = (v0[i] * navigation.direction(x[i]) - v[i]) / settings.relaxation_time;
+    Vector<2> a = (v0[i] * direction(i, x[i]) - v[i]) / settings.relaxation_time;
     const Real p_over_rho2 = p[i] / (rho[i] * rho[i]);
     neighbors.fluid_pairs([&](std::size_t j, const Vector<2>& x_ij, Real r2) {
       if (!(r2 > 0)) return;

@@ -251,10 +251,12 @@ struct Probe {
   Vec position{};
 };
 
-/// `count` agents spread evenly over a region (docs/crowds.md, "Agents").
+/// `count` agents spread evenly over a region (docs/crowds.md, "Agents"), walking to the nearest
+/// exit or, with a heading, along it (a corridor without exits).
 struct AgentGroup {
   Box region;
   std::size_t count = 0;
+  std::optional<Vec> heading;  // unit vector
 };
 
 /// A region that removes and counts every agent that enters it: the space beyond a door.

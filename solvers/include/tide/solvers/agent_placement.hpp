@@ -15,7 +15,7 @@ struct AgentStarts {
   std::vector<std::size_t> groups;  // per agent, its index in crowd.agents
 };
 
-/// Throws scene::SceneError at /crowd/agents/k where a group's agents would stand closer than
+/// Throws scene::SceneError at /crowd/agents/k/count where two agents of a group would stand closer than
 /// a body diameter (2 crowd.body_radius) to one another.
 AgentStarts place_agents(const scene::Scene& scene);
 

@@ -22,7 +22,8 @@ namespace tide {
 /// of one person's mass in the number density, ρ_i = Σ_j W_ij in persons/m² (van Toll et al.
 /// 2021, Sec. 4); an uneasiness pressure p = K max(ρ − ρ_c, 0) above the comfortable density ρ_c
 /// pushes agents from crowded places to less crowded ones; each agent relaxes toward its desired
-/// velocity, its own desired speed along the navigation field's direction to the nearest exit;
+/// velocity, its own desired speed along the navigation field's direction to the nearest exit (or
+/// its group's fixed heading);
 /// agents and walls repel one another at short range (passes/crowd_forces.hpp). Agents entering
 /// an exit region are removed and counted. Walls are the scene's wall particles, as contacts.
 /// Symplectic Euler steps; every pass gathers, so results are bitwise the same for any thread count.
@@ -83,6 +84,7 @@ class CrowdSph final : public Simulation<2> {
   ParticleSet<2> agents_;
   FluidFields<2> fields_;
   ScalarField desired_speed_;
+  std::optional<VectorField> heading_;  // where some group walks along a fixed heading (zero for the others)
   std::vector<std::size_t> exited_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
