@@ -223,15 +223,17 @@ std::vector<SeriesRecorder<D>> series_recorders(const scene::Scene& scene, const
   if (const RigidBodies<D>* bodies = simulation.bodies(); bodies && !bodies->empty())
     recorders.push_back(body_recorder<D>(scene, *bodies, output_directory));
   if (scene.crowd) {
-    recorders.emplace_back(scene, std::make_unique<io::CrowdWriter>(output_directory / "crowd.csv", scene),
-                           [](const Simulation<D>& s) {
-                             const CrowdStatus status = *s.crowd_status();
-                             std::vector<double> row{static_cast<double>(status.inside)};
-                             for (const std::size_t out : status.out) row.push_back(static_cast<double>(out));
-                             row.push_back(status.mean_density);
-                             row.push_back(status.mean_speed);
-                             return row;
-                           });
+    recorders.emplace_back(
+        scene, std::make_unique<io::CrowdWriter>(output_directory / "crowd.csv", scene), [](const Simulation<D>& s) {
+          const CrowdStatus status = *s.crowd_status();
+          std::vector<double> row{static_cast<double>(status.inside)};
+          for (const std::size_t out : status.out) row.push_back(static_cast<double>(out));
+          row.push_back(status.mean_density);
+          row.push_back(status.mean_speed);
+          row.insert(row.end(),
+                     {status.peak.density, status.peak.position[0], status.peak.position[1], status.peak.time});
+          return row;
+        });
   }
   return recorders;
 }

@@ -11,6 +11,7 @@
 #include "passes/density_summation.hpp"
 #include "simulation_setup.hpp"
 #include "state_check.hpp"
+#include "tide/core/log.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/solvers/agent_placement.hpp"
 #include "tide/solvers/capabilities.hpp"
@@ -81,8 +82,8 @@ CrowdSph::CrowdSph(const scene::Scene& scene)
   time_step_rule_.cfl = static_cast<Real>(scene.solver.cfl);
   time_step_rule_.force_number = static_cast<Real>(scene.solver.force_number);
   // Symplectic Euler resolves the relaxation (τ/10) and the period 2π sqrt(m/k) of two bodies
-  // pressed together (0.2 sqrt(m/k), about 30 steps a period): the force limit alone lets a
-  // first contact overshoot before |a| has grown.
+  // pressed together (0.2 sqrt(m/k): 31 steps a period) before they touch, which the force
+  // limit, reading the accelerations of the step before, sees only once they do.
   time_step_cap_ =
       static_cast<Real>(std::min(crowd.relaxation_time / 10, 0.2 * std::sqrt(crowd.agent_mass / crowd.body_stiffness)));
   time_ = scene.time.start;
@@ -90,6 +91,7 @@ CrowdSph::CrowdSph(const scene::Scene& scene)
   search_and_sum_density();
   compute_acceleration();
   check_state();
+  record_peak();
   pipeline_ = build_pipeline();
 }
 
@@ -105,6 +107,7 @@ Pipeline CrowdSph::build_pipeline() {
                       ++step_count_;
                     }});
   stages.push_back({"state_check", [this](StepContext&) { check_state(); }});
+  stages.push_back({"density_peak", [this](StepContext&) { record_peak(); }});
   return Pipeline(std::move(stages));
 }
 
@@ -202,12 +205,38 @@ void CrowdSph::check_state() {
   max_acceleration_ = maxima.acceleration;
 }
 
+void CrowdSph::record_peak() {
+  struct Largest {
+    Real density = -1;
+    std::size_t agent = 0;
+  };
+  const auto rho = agents_[fields_.density];
+  // Ties go to the lower index, so the agent found does not depend on the thread count.
+  const Largest largest = reduce(
+      agents_.size(), Largest{},
+      [&](std::size_t i) {
+        return Largest{rho[i], i};
+      },
+      [](const Largest& a, const Largest& b) { return b.density > a.density ? b : a; });
+  if (!(static_cast<double>(largest.density) > peak_.density)) return;
+  const bool first_crush = peak_.density <= crush_density && largest.density > crush_density;
+  const Vector<2> x = agents_[fields_.position][largest.agent];
+  peak_ = {static_cast<double>(largest.density), {static_cast<double>(x[0]), static_cast<double>(x[1])}, time_};
+  if (first_crush) {
+    log_warning("crowd density " + setup::format_number(peak_.density) + " persons/m^2 at [" +
+                setup::format_number(peak_.position[0]) + ", " + setup::format_number(peak_.position[1]) +
+                "], t = " + setup::format_number(time_) + " s: above " + setup::format_number(crush_density) +
+                " persons/m^2, a crush risk");
+  }
+}
+
 double CrowdSph::bytes_per_particle() const { return setup::bytes_per_particle<2>(agents_, interactions_); }
 
 std::optional<CrowdStatus> CrowdSph::crowd_status() const {
   CrowdStatus status;
   status.inside = agents_.size();
   status.out = exited_;
+  status.peak = peak_;
   const auto rho = agents_[fields_.density];
   const auto v = agents_[fields_.velocity];
   const auto sum = [&](auto value) {

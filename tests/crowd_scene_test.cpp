@@ -1,14 +1,17 @@
 // Crowd scenes the reader, the capability check or the crowd scheme refuses (issue 36: no exit,
 // an unreachable goal, agents inside walls, negative counts), each at its key path; the
-// navigation field and the agents' desired speeds.
+// crush-risk flag; the navigation field and the agents' desired speeds.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "crowd_scenes.hpp"
+#include "tide/core/log.hpp"
 #include "tide/core/scene_error.hpp"
 #include "tide/solvers/agent_placement.hpp"
 #include "tide/solvers/crowd_sph.hpp"
@@ -107,6 +110,31 @@ TEST(CrowdScene, ThreeDimensionsAreRefused) {
               "exits": [{"name": "door", "region": {"min": [3, 0, 0], "max": [4, 4, 1]}}]},
     "domain": {"min": [0, 0, 0], "max": [4, 4, 1]}, "solver": {"scheme": "crowd"}, "time": {"end": 1}})";
   EXPECT_EQ(refusal_path(json, 3), "/dimension");
+}
+
+// 36 agents of body radius 0.2 m packed 0.4 m apart (6.25 persons/m² on the lattice): the peak
+// density passes 5 persons/m² at the start, where the crowd stands, and is flagged once (the
+// crowd then spreads out).
+TEST(CrowdPeak, ADensityAboveFiveIsFlaggedOnceWithWhereAndWhen) {
+  test::CrowdRoom room;
+  room.agents = R"([{"region": {"min": [2, 2], "max": [4.4, 4.4]}, "count": 36}])";
+  std::string json = test::crowd_room_json(room);
+  json = replaced(json, R"("crowd": {)", R"("crowd": {"body_radius": 0.2, )");
+  std::vector<std::string> warnings;
+  const LogSink previous = set_log_sink([&](LogLevel level, std::string_view message) {
+    if (level == LogLevel::warning) warnings.emplace_back(message);
+  });
+  CrowdSph crowd(io::parse_scene(json, "packed"));
+  for (int k = 0; k < 20; ++k) crowd.step();
+  set_log_sink(previous);
+  const CrowdPeak& peak = crowd.peak();
+  // Measured: 6.336, the kernel sum over the 6.25 persons/m² lattice.
+  EXPECT_GT(peak.density, crush_density) << peak.density;
+  EXPECT_EQ(peak.time, 0);
+  EXPECT_GE(peak.position[0], 2);
+  EXPECT_LE(peak.position[0], 4.4);
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_NE(warnings[0].find("a crush risk"), std::string::npos) << warnings[0];
 }
 
 // Fast marching in an open 4 m × 4 m square toward its left column: the distance grows by one

@@ -240,7 +240,8 @@ TEST(ThreadDeterminism, InflowChannelIsBitwiseIdentical) {
 }
 
 // A crowd of 1020 agents, 20 of them leaving through the door within the 400 steps (2 s): the
-// density and force passes, the navigation field and the removal of leavers, with the counts.
+// density and force passes, the navigation field and the removal of leavers, with the counts
+// and the peak density.
 TEST(ThreadDeterminism, CrowdEvacuationIsBitwiseIdentical) {
   test::CrowdRoom room;
   room.length = 30;
@@ -252,6 +253,9 @@ TEST(ThreadDeterminism, CrowdEvacuationIsBitwiseIdentical) {
     CrowdSph crowd(test::crowd_room(room));
     std::vector<Real> values = state_after_steps(crowd, 400);
     values.push_back(static_cast<Real>(crowd.exited()[0]));
+    const CrowdPeak& peak = crowd.peak();
+    for (const double v : {peak.density, peak.position[0], peak.position[1], peak.time})
+      values.push_back(static_cast<Real>(v));
     return values;
   };
   const std::vector<Real> one = state(1);

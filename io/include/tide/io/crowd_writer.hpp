@@ -11,7 +11,7 @@ namespace tide::io {
 ///
 ///   # TideSPH crowd of scene <scene source>
 ///   # agents: inside the domain; out_<exit>: left through that exit so far; ...
-///   time,inside,out_<exit>,...,mean_density,mean_speed
+///   time,inside,out_<exit>,...,mean_density,mean_speed,peak_density,peak_x,peak_y,peak_time
 ///
 /// (SeriesWriter: shortest round-trip numbers, the file replaced whole by `write`).
 class CrowdWriter : public SeriesWriter {

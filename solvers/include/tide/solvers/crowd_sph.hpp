@@ -61,6 +61,8 @@ class CrowdSph final : public Simulation<2> {
   ScalarField desired_speed() const { return desired_speed_; }
   /// Agents that left through each exit so far (crowd.exits order).
   const std::vector<std::size_t>& exited() const { return exited_; }
+  /// The largest density since the start, where and when.
+  const CrowdPeak& peak() const { return peak_; }
 
  private:
   Pipeline build_pipeline();
@@ -71,6 +73,9 @@ class CrowdSph final : public Simulation<2> {
   /// Counts the agents inside each exit region (the first that holds them) and removes them.
   void remove_exited();
   void check_state();
+  /// Keeps the largest density of this step in peak_ if it is the largest so far; warns, once,
+  /// when it first passes crush_density.
+  void record_peak();
 
   scene::Scene scene_;
   Real smoothing_length_;
@@ -86,6 +91,7 @@ class CrowdSph final : public Simulation<2> {
   ScalarField desired_speed_;
   std::optional<VectorField> heading_;  // where some group walks along a fixed heading (zero for the others)
   std::vector<std::size_t> exited_;
+  CrowdPeak peak_;
   double time_ = 0;
   std::uint64_t step_count_ = 0;
   Real max_speed_ = 0;
