@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "progress.hpp"
+#include "tide/io/crowd_writer.hpp"
 #include "tide/io/frame_writer.hpp"
 #include "tide/io/probe_writer.hpp"
 #include "tide/io/recovery_writer.hpp"
@@ -200,7 +201,7 @@ SeriesRecorder<D> body_recorder(const scene::Scene& scene, const RigidBodies<D>&
                            });
 }
 
-/// The scene's probes into <out>/probes.csv, and output.recovery into <out>/recovery.csv (its
+/// The scene's probes into <out>/probes.csv, output.recovery into <out>/recovery.csv (its
 /// initial mass measured now: std::invalid_argument when its region holds none).
 template <int D>
 std::vector<SeriesRecorder<D>> series_recorders(const scene::Scene& scene, const Simulation<D>& simulation,
@@ -221,6 +222,19 @@ std::vector<SeriesRecorder<D>> series_recorders(const scene::Scene& scene, const
   }
   if (const RigidBodies<D>* bodies = simulation.bodies(); bodies && !bodies->empty())
     recorders.push_back(body_recorder<D>(scene, *bodies, output_directory));
+  if (scene.crowd) {
+    recorders.emplace_back(
+        scene, std::make_unique<io::CrowdWriter>(output_directory / "crowd.csv", scene), [](const Simulation<D>& s) {
+          const CrowdStatus status = *s.crowd_status();
+          std::vector<double> row{static_cast<double>(status.inside)};
+          for (const std::size_t out : status.out) row.push_back(static_cast<double>(out));
+          row.push_back(status.mean_density);
+          row.push_back(status.mean_speed);
+          row.insert(row.end(),
+                     {status.peak.density, status.peak.position[0], status.peak.position[1], status.peak.time});
+          return row;
+        });
+  }
   return recorders;
 }
 

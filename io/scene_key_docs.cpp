@@ -33,6 +33,10 @@ std::vector<SectionDoc> section_docs() {
       section_doc("output", output_keys()),
       section_doc("output.recovery", recovery_keys()),
       section_doc("probes[i]", probe_keys()),
+      section_doc("crowd", crowd_keys()),
+      section_doc("crowd.agents[i]", crowd_agent_keys()),
+      section_doc("crowd.exits[i]", crowd_exit_keys()),
+      section_doc("crowd.desired_speed", crowd_speed_keys()),
   };
 }
 

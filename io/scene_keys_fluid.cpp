@@ -9,6 +9,17 @@
 #include "scene_shapes.hpp"
 
 namespace tide::io {
+namespace {
+
+// A crowd scene (read before the materials and the fluid) has agents instead: true where it
+// has a crowd, which may not have this key.
+bool refused_in_crowd(const ValueReader& values, const Node& node, const scene::Scene& scene) {
+  if (!scene.crowd) return false;
+  if (node.present()) values.fail(node, "nothing in a crowd scene (its people are crowd.agents)");
+  return true;
+}
+
+}  // namespace
 
 std::span<const Key<scene::Material>> material_keys() {
   static constexpr std::array<Key<scene::Material>, 5> keys{{
@@ -46,6 +57,7 @@ std::span<const Key<scene::Material>> material_keys() {
 }
 
 void read_materials(const ValueReader& values, const Node& node, scene::Scene& scene) {
+  if (refused_in_crowd(values, node, scene)) return;
   for (const Node& entry : values.elements(node, 1, "a non-empty array of materials")) {
     scene::Material material;
     read_section(values, entry, material_keys(), material);
@@ -136,6 +148,7 @@ std::span<const Key<scene::FluidBlock>> fluid_block_keys() {
 }
 
 void read_fluid(const ValueReader& values, const Node& node, scene::Scene& scene) {
+  if (refused_in_crowd(values, node, scene)) return;
   for (const Node& entry : values.elements(node, 1, "a non-empty array of fluid blocks")) {
     scene::FluidBlock block;
     read_section(values, entry, fluid_block_keys(), block);

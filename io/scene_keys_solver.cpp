@@ -7,11 +7,12 @@ namespace tide::io {
 
 std::span<const Key<scene::Solver>> solver_keys() {
   static constexpr std::array<Key<scene::Solver>, 25> keys{{
-      {"scheme", "string: `\"wcsph\"`, `\"dfsph\"` or `\"iisph\"`", "–", "`\"wcsph\"`",
+      {"scheme", "string: `\"wcsph\"`, `\"dfsph\"`, `\"iisph\"` or `\"crowd\"`", "–", "`\"wcsph\"`",
        "Weakly compressible SPH, or an incompressible scheme: divergence-free SPH (Bender & Koschier 2015, 2017) or "
        "implicit incompressible SPH (Ihmsen et al. 2014); see [Incompressible schemes](#incompressible-schemes). "
        "Several fluid materials run with every scheme; `dfsph` and `iisph` take rest densities at most 10 times apart "
-       "and no surface tension ([multiphase.md](multiphase.md#incompressible-schemes-dfsph-iisph)).",
+       "and no surface tension ([multiphase.md](multiphase.md#incompressible-schemes-dfsph-iisph)). `crowd` moves the "
+       "agents of the `crowd` section instead ([crowds.md](crowds.md)).",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Solver& solver) {
          solver.scheme = values.choice(value, scheme_names);

@@ -21,7 +21,7 @@ void read_gravity(const ValueReader& values, const Node& value, scene::Scene& sc
 // Read in this order: each section may depend on those above it (the fluid on the materials, the
 // domain on the container, the probes on the domain).
 std::span<const Key<scene::Scene>> top_level_keys() {
-  static constexpr std::array<Key<scene::Scene>, 12> keys{{
+  static constexpr std::array<Key<scene::Scene>, 13> keys{{
       {"dimension", "integer, 2 or 3", "–", "", "Number of space dimensions.", Presence::required,
        [](const ValueReader& values, const Node& value, scene::Scene& scene) {
          scene.dimension = static_cast<int>(values.integer(value, 2, 3, "2 or 3"));
@@ -32,9 +32,15 @@ std::span<const Key<scene::Scene>> top_level_keys() {
          scene.particle_spacing = values.number(value, positive);
        }},
       {"kernel", "object", "–", "see below", "Smoothing kernel.", Presence::always, read_kernel},
-      {"materials", "non-empty array of objects", "–", "", "The fluids.", Presence::required, read_materials},
-      {"fluid", "non-empty array of objects", "–", "", "The blocks filled with fluid particles at the start.",
-       Presence::required, read_fluid},
+      {"crowd", "object", "–", "no crowd",
+       "People instead of a fluid, with `solver.scheme` `\"crowd\"`: agents, exits and the crowd model "
+       "([crowds.md](crowds.md)). A crowd scene has no `materials` and no `fluid`.",
+       Presence::optional, read_crowd},
+      {"materials", "non-empty array of objects", "–", "none with a `crowd`", "The fluids. Required without a `crowd`.",
+       Presence::always, read_materials},
+      {"fluid", "non-empty array of objects", "–", "none with a `crowd`",
+       "The blocks filled with fluid particles at the start. Required without a `crowd`.", Presence::always,
+       read_fluid},
       {"walls", "object", "–", "no walls", "Container and obstacles made of wall particles.", Presence::optional,
        read_walls},
       {"domain", "object", "–", "derived from `walls.container`",

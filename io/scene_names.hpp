@@ -17,8 +17,10 @@ struct Named {
   E value;
 };
 
-inline constexpr std::array<Named<scene::Scheme>, 3> scheme_names{
-    {{"wcsph", scene::Scheme::wcsph}, {"dfsph", scene::Scheme::dfsph}, {"iisph", scene::Scheme::iisph}}};
+inline constexpr std::array<Named<scene::Scheme>, 4> scheme_names{{{"wcsph", scene::Scheme::wcsph},
+                                                                   {"dfsph", scene::Scheme::dfsph},
+                                                                   {"iisph", scene::Scheme::iisph},
+                                                                   {"crowd", scene::Scheme::crowd}}};
 inline constexpr std::array<Named<scene::EquationOfState>, 2> equation_of_state_names{
     {{"tait", scene::EquationOfState::tait}, {"linear", scene::EquationOfState::linear}}};
 inline constexpr std::array<Named<scene::DensityMethod>, 2> density_method_names{

@@ -12,7 +12,11 @@ namespace tide::io {
 
 /// Also sets the walls' default layer count, which the kernel's support decides.
 void read_kernel(const ValueReader& values, const Node& node, scene::Scene& scene);
+/// solver.scheme "crowd": the agents, exits and model parameters (docs/crowds.md).
+void read_crowd(const ValueReader& values, const Node& node, scene::Scene& scene);
+/// Required unless the scene has a crowd (read before them), which has none.
 void read_materials(const ValueReader& values, const Node& node, scene::Scene& scene);
+/// Required unless the scene has a crowd, which has none.
 void read_fluid(const ValueReader& values, const Node& node, scene::Scene& scene);
 void read_walls(const ValueReader& values, const Node& node, scene::Scene& scene);
 

@@ -77,9 +77,30 @@ void check_bodies(const scene::Scene& scene) {
   }
 }
 
+/// A crowd (docs/crowds.md) walks on the floor plane among fixed walls; the crowd scheme moves
+/// agents and nothing else, and agents only the crowd scheme.
+void check_crowd(const scene::Scene& scene) {
+  const bool crowd_scheme = scene.solver.scheme == scene::Scheme::crowd;
+  if (crowd_scheme && !scene.crowd)
+    refuse(scene, "/crowd", "a crowd section (agents and exits) for solver.scheme \"crowd\"", "nothing");
+  if (!crowd_scheme && scene.crowd)
+    refuse(scene, "/solver/scheme", "\"crowd\" for a scene with a crowd section", quoted_scheme(scene.solver.scheme));
+  if (!crowd_scheme) return;
+  if (scene.dimension != 2)
+    refuse(scene, "/dimension", "2 for solver.scheme \"crowd\" (agents walk on the floor plane)",
+           std::to_string(scene.dimension));
+  for (std::size_t k = 0; k < scene.walls.obstacles.size(); ++k) {
+    const scene::Obstacle& obstacle = scene.walls.obstacles[k];
+    const std::string path = "/walls/obstacles/" + std::to_string(k);
+    if (obstacle.motion) refuse(scene, path + "/motion", "fixed walls in a crowd scene", "a motion");
+    if (obstacle.body) refuse(scene, path + "/body", "fixed walls in a crowd scene", "a body");
+  }
+}
+
 }  // namespace
 
 void check_capabilities(const scene::Scene& scene) {
+  check_crowd(scene);
   const std::size_t fluids = scene::fluid_material_count(scene);
   check_phases(scene, fluids);
   check_surface_tension(scene, fluids);

@@ -23,9 +23,10 @@ IncompressibleScheme incompressible_scheme(scene::Scheme scheme) {
       // rest must rebuild half its weight every step, ~100 sweeps at 25 particles deep.
       return {scheme, Real(0.5), Real(1), false, Real(0)};
     case scene::Scheme::wcsph:
+    case scene::Scheme::crowd:
       break;
   }
-  throw std::invalid_argument("WCSPH is not an incompressible scheme");
+  throw std::invalid_argument("incompressible_scheme: only dfsph and iisph are incompressible schemes");
 }
 
 template <int D>

@@ -1,5 +1,7 @@
 #include "tide/solvers/simulation.hpp"
 
+#include "tide/solvers/capabilities.hpp"
+#include "tide/solvers/crowd_sph.hpp"
 #include "tide/solvers/incompressible_sph.hpp"
 #include "tide/solvers/wcsph.hpp"
 
@@ -7,6 +9,11 @@ namespace tide {
 
 template <int D>
 std::unique_ptr<Simulation<D>> make_simulation(const scene::Scene& scene) {
+  // A crowd scene has no fluid for the fluid schemes to read: its refusals (3D, another scheme) come first.
+  if (scene.solver.scheme == scene::Scheme::crowd || scene.crowd) check_capabilities(scene);
+  if constexpr (D == 2) {
+    if (scene.solver.scheme == scene::Scheme::crowd) return std::make_unique<CrowdSph>(scene);
+  }
   if (scene.solver.scheme == scene::Scheme::wcsph) return std::make_unique<Wcsph<D>>(scene);
   return std::make_unique<IncompressibleSph<D>>(scene);
 }
@@ -19,6 +26,8 @@ std::string_view scheme_name(scene::Scheme scheme) {
       return "dfsph";
     case scene::Scheme::iisph:
       return "iisph";
+    case scene::Scheme::crowd:
+      return "crowd";
   }
   return "unknown";
 }

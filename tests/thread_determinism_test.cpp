@@ -7,12 +7,14 @@
 #include <random>
 #include <vector>
 
+#include "crowd_scenes.hpp"
 #include "inflow_scenes.hpp"
 #include "multiphase_scenes.hpp"
 #include "small_scenes.hpp"
 #include "tide/core/kernels/cubic_spline.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/solvers/crowd_sph.hpp"
 #include "tide/solvers/probes.hpp"
 #include "tide/solvers/simulation.hpp"
 #include "tide/solvers/wcsph.hpp"
@@ -243,6 +245,30 @@ TEST(ThreadDeterminism, InflowChannelIsBitwiseIdentical) {
     return state_after_steps(*make_simulation<2>(test::inflow_channel_scene(1.0 / 40)), 100);
   };
   EXPECT_TRUE(same_bytes(state(1), state(2)));
+}
+
+// A crowd of 1020 agents, 20 of them leaving through the door within the 400 steps (2 s): the
+// density and force passes, the navigation field and the removal of leavers, with the counts
+// and the peak density.
+TEST(ThreadDeterminism, CrowdEvacuationIsBitwiseIdentical) {
+  test::CrowdRoom room;
+  room.length = 30;
+  room.width = 20;
+  room.agents = R"([{"region": {"min": [1, 1], "max": [25, 19]}, "count": 1000},
+                    {"region": {"min": [27, 8], "max": [29.5, 12]}, "count": 20}])";
+  const auto state = [&](int threads) {
+    const ThreadLimit limit(threads);
+    CrowdSph crowd(test::crowd_room(room));
+    std::vector<Real> values = state_after_steps(crowd, 400);
+    values.push_back(static_cast<Real>(crowd.exited()[0]));
+    const CrowdPeak& peak = crowd.peak();
+    for (const double v : {peak.density, peak.position[0], peak.position[1], peak.time})
+      values.push_back(static_cast<Real>(v));
+    return values;
+  };
+  const std::vector<Real> one = state(1);
+  EXPECT_GT(one.back(), 0) << "no agent left: the removal is not exercised";
+  EXPECT_TRUE(same_bytes(one, state(2)));
 }
 
 }  // namespace

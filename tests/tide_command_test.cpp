@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -441,6 +442,44 @@ TEST_F(TideCommand, OilStudyRunsTheScenesAndPlotsTheirRecovery) {
   for (const char* plot :
        {"middle_fractured.png", "upper_fractured.png", "upper_fractured_width.png", "wetting.png", "capillary.png"})
     EXPECT_GT(fs::file_size(out / plot), 0u) << plot;
+}
+
+// The shipped evacuation (docs/crowds.md): everyone leaves through the door, counted in
+// crowd.csv, whose last row has nobody inside; frames as for a fluid.
+TEST_F(TideCommand, CrowdRoomEvacuationRunsAndCountsEveryoneOut) {
+  const fs::path out = directory_ / "out";
+  const CommandResult result = run_tide("run --quiet --threads 2 --out " + out.string() + " " +
+                                        (fs::path(TIDE_SOURCE_SCENES_DIR) / "crowd_room_evacuation.json").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.output.find("removed"), result.output.find("removed (left the domain)"))
+      << "agents leaving through the door are not lost particles: " << result.output;
+  std::ifstream csv(out / "crowd.csv");
+  std::string line, header, last;
+  while (std::getline(csv, line)) {
+    if (line.starts_with("time,")) header = line;
+    if (!line.empty() && line[0] != '#') last = line;
+  }
+  EXPECT_EQ(header, "time,inside,out_door,mean_density,mean_speed,peak_density,peak_x,peak_y,peak_time");
+  // Measured: all 100 out by 45 s of the 60.
+  EXPECT_NE(last.find(",0,100,0,0,"), std::string::npos) << last;
+  EXPECT_TRUE(fs::exists(out / "frames.xdmf"));
+}
+
+TEST_F(TideCommand, CrowdWithAnAgentInAWallIsRefusedByRun) {
+  const fs::path scene = directory_ / "crowd.json";
+  std::ifstream shipped(fs::path(TIDE_SOURCE_SCENES_DIR) / "crowd_room_evacuation.json");
+  std::string text{std::istreambuf_iterator<char>(shipped), std::istreambuf_iterator<char>()};
+  const std::string from = R"("count": 100})";
+  ASSERT_NE(text.find(from), std::string::npos);
+  // A second group of one, inside the left wall.
+  text.replace(text.find(from), from.size(),
+               R"("count": 100}, {"region": {"min": [-0.3, 1], "max": [0, 2]}, "count": 1})");
+  std::ofstream(scene) << text;
+  const CommandResult result = run_tide("run --quiet --out " + (directory_ / "out").string() + " " + scene.string());
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("/crowd/agents/1: expected a region whose agents stand inside the domain"),
+            std::string::npos)
+      << result.output;
 }
 
 }  // namespace

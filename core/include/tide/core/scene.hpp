@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -154,8 +155,9 @@ inline Domain domain_around(const Container& container, double wall_thickness, i
 }
 
 /// wcsph: weakly compressible, pressure from an equation of state. dfsph, iisph: incompressible,
-/// pressure from an implicit solve (Bender & Koschier 2017; Ihmsen et al. 2014).
-enum class Scheme { wcsph, dfsph, iisph };
+/// pressure from an implicit solve (Bender & Koschier 2017; Ihmsen et al. 2014). crowd: people as
+/// particles (Scene::crowd, docs/crowds.md).
+enum class Scheme { wcsph, dfsph, iisph, crowd };
 enum class EquationOfState { tait, linear };
 enum class DensityMethod { summation, continuity };
 enum class ViscosityModel { artificial, laminar };
@@ -249,6 +251,45 @@ struct Probe {
   Vec position{};
 };
 
+/// `count` agents spread evenly over a region (docs/crowds.md, "Agents"), walking to the nearest
+/// exit or, with a heading, along it (a corridor without exits).
+struct AgentGroup {
+  Box region;
+  std::size_t count = 0;
+  std::optional<Vec> heading;  // unit vector
+};
+
+/// A region that removes and counts every agent that enters it: the space beyond a door.
+struct CrowdExit {
+  std::string name;  // its column in crowd.csv
+  Box region;
+};
+
+/// Each agent's desired (free walking) speed, drawn once from a normal distribution truncated at
+/// three deviations: 1.34 ± 0.26 m/s (Helbing & Molnár 1995, Sec. III, after Henderson 1971).
+struct DesiredSpeed {
+  double mean = 1.34;       // m/s
+  double deviation = 0.26;  // m/s
+  std::uint64_t seed = 1;   // of the generator: the same seed, the same speeds
+};
+
+/// A crowd (solver.scheme "crowd", docs/crowds.md): each agent a particle of an SPH crowd (van
+/// Toll et al. 2021), with the social-force constants of Helbing, Farkas & Vicsek 2000.
+struct Crowd {
+  std::vector<AgentGroup> agents;
+  std::vector<CrowdExit> exits;
+  DesiredSpeed desired_speed;
+  double comfortable_density = 2;    // persons/m², ρ_c: no uneasiness up to it
+  double stiffness = 1;              // K, m⁴/s²: uneasiness p = K max(ρ − ρ_c, 0)
+  double relaxation_time = 0.5;      // s, τ
+  double agent_mass = 80;            // kg, m
+  double body_radius = 0.25;         // m, r
+  double repulsion_strength = 2000;  // N, A
+  double repulsion_range = 0.08;     // m, B
+  double body_stiffness = 1.2e5;     // kg/s², k
+  double navigation_cell = 0.1;      // m: the cell of the distance field to the exits
+};
+
 struct Scene {
   std::string source;  // file the scene came from, for messages
   int dimension = 2;
@@ -264,6 +305,7 @@ struct Scene {
   Time time;
   Output output;
   std::vector<Probe> probes;
+  std::optional<Crowd> crowd;  // solver.scheme "crowd": the agents instead of materials and fluid
 };
 
 /// Per material, whether the fluid uses it: a fluid block starts with it, or the inflow injects it.

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "tide/core/kernels/kernel.hpp"
@@ -9,6 +10,7 @@
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
+#include "tide/solvers/crowd_status.hpp"
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
 #include "tide/solvers/pipeline.hpp"
@@ -49,6 +51,8 @@ class Simulation {
   virtual const Pipeline& pipeline() const = 0;
   /// The rigid bodies the fluid moves (walls.obstacles[k].body); null for a scheme without them.
   virtual const RigidBodies<D>* bodies() const { return nullptr; }
+  /// The crowd's counts and means (solver.scheme "crowd"); empty for a fluid scheme.
+  virtual std::optional<CrowdStatus> crowd_status() const { return std::nullopt; }
   /// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
   virtual double bytes_per_particle() const = 0;
   /// Those bytes item by item (MemoryUsage); a scheme that does not itemise them reports one item.
@@ -64,7 +68,7 @@ class Simulation {
 template <int D>
 std::unique_ptr<Simulation<D>> make_simulation(const scene::Scene& scene);
 
-/// "wcsph", "dfsph" or "iisph".
+/// "wcsph", "dfsph", "iisph" or "crowd".
 std::string_view scheme_name(scene::Scheme scheme);
 
 }  // namespace tide

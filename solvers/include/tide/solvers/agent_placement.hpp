@@ -1,0 +1,27 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "tide/core/scene.hpp"
+#include "tide/core/types.hpp"
+
+namespace tide {
+
+/// The agents of a crowd at the start: each group's `count` agents on the rows of a square
+/// lattice centred in its region, filled row by row from the bottom, in group order.
+struct AgentStarts {
+  std::vector<Vector<2>> positions;
+  std::vector<std::size_t> groups;  // per agent, its index in crowd.agents
+};
+
+/// Throws scene::SceneError at /crowd/agents/k/count where two agents of a group would stand closer than
+/// a body diameter (2 crowd.body_radius) to one another.
+AgentStarts place_agents(const scene::Scene& scene);
+
+/// `count` desired speeds from crowd.desired_speed: normal by the Box–Muller transform of a
+/// seeded 64-bit Mersenne Twister (the standard library's normal_distribution differs between
+/// implementations), redrawn outside three deviations of the mean or at or below zero.
+std::vector<Real> desired_speeds(const scene::DesiredSpeed& speed, std::size_t count);
+
+}  // namespace tide

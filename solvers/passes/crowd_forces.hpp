@@ -1,0 +1,90 @@
+#pragma once
+
+// The accelerations of a crowd's agents (docs/crowds.md, "Model"): relaxation toward each
+// agent's desired velocity, the SPH force of the uneasiness pressure, and the short-range body
+// repulsion between agents and from walls. One agent's sum gathers from its neighbours only.
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "neighbor_walk.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
+#include "tide/core/scene.hpp"
+#include "tide/solvers/particle_fields.hpp"
+
+namespace tide::passes {
+
+/// The model's constants in the particles' precision.
+struct CrowdForceSettings {
+  Real relaxation_time;     // τ
+  Real agent_mass;          // m
+  Real body_radius;         // r
+  Real repulsion_strength;  // A
+  Real repulsion_range;     // B
+  Real body_stiffness;      // k
+  Real wall_offset;         // Δx/2: from a wall's outermost particle to its surface
+
+  static CrowdForceSettings of(const scene::Scene& scene) {
+    const scene::Crowd& c = *scene.crowd;
+    return {static_cast<Real>(c.relaxation_time),
+            static_cast<Real>(c.agent_mass),
+            static_cast<Real>(c.body_radius),
+            static_cast<Real>(c.repulsion_strength),
+            static_cast<Real>(c.repulsion_range),
+            static_cast<Real>(c.body_stiffness),
+            static_cast<Real>(scene.particle_spacing / 2)};
+  }
+
+  /// The magnitude of the repulsion between bodies whose surfaces are `gap` apart (negative:
+  /// overlapping): A exp(−gap/B) + k max(−gap, 0), Helbing, Farkas & Vicsek 2000, eq. 2 (its
+  /// sliding friction left out), per unit of the agent's mass.
+  Real repulsion(Real gap) const {
+    return (repulsion_strength * std::exp(-gap / repulsion_range) + body_stiffness * std::max(-gap, Real(0))) /
+           agent_mass;
+  }
+};
+
+/// a_i = (v0_i e_i − v_i)/τ (Helbing & Molnár 1995, eq. 2)
+///       − Σ_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3, with m_j = 1 person)
+///       + Σ_j f(|x_ij| − 2r) x_ij/|x_ij| + f(d_iW − r) n_iW (Helbing, Farkas & Vicsek 2000, eqs. 2, 3)
+/// with e_i = direction(i, x_i), the agent's desired direction, and d_iW, n_iW the distance to
+/// and the normal from the nearest wall surface, taken from the nearest wall particle of each
+/// wall contact.
+template <class Direction>
+void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings& settings, const Direction& direction,
+                        const ParticleSet<2>& agents, const FluidFields<2>& f, ScalarField desired_speed,
+                        const Interactions<2>& interactions, VectorView<2> acceleration) {
+  const auto x = agents[f.position];
+  const auto v = agents[f.velocity];
+  const auto rho = agents[f.density];
+  const auto p = agents[f.pressure];
+  const auto v0 = agents[desired_speed];
+  const Real contact_distance = 2 * settings.body_radius;
+  for_each_fluid_particle<2>(interactions, x, VectorOutput<2>{acceleration}, [&](std::size_t i, const auto& neighbors) {
+    Vector<2> a = (v0[i] * direction(i, x[i]) - v[i]) / settings.relaxation_time;
+    const Real p_over_rho2 = p[i] / (rho[i] * rho[i]);
+    neighbors.fluid_pairs([&](std::size_t j, const Vector<2>& x_ij, Real r2) {
+      if (!(r2 > 0)) return;
+      const Real r = std::sqrt(r2);
+      a -= (p_over_rho2 + p[j] / (rho[j] * rho[j])) * kernel.derivative_over_r(r) * x_ij;
+      a += settings.repulsion(r - contact_distance) / r * x_ij;
+    });
+    neighbors.contacts([&](const auto& contact) {
+      Real nearest2 = std::numeric_limits<Real>::infinity();
+      Vector<2> nearest = Vector<2>::Zero();
+      contact.pairs([&](std::size_t, const Vector<2>& x_ib, Real r2) {
+        if (r2 < nearest2) {
+          nearest2 = r2;
+          nearest = x_ib;
+        }
+      });
+      if (!(nearest2 > 0) || nearest2 == std::numeric_limits<Real>::infinity()) return;
+      const Real r = std::sqrt(nearest2);
+      a += settings.repulsion(r - settings.wall_offset - settings.body_radius) / r * nearest;
+    });
+    return a;
+  });
+}
+
+}  // namespace tide::passes
