@@ -44,7 +44,7 @@ void read_exits(const ValueReader& values, const Node& node, scene::Crowd& crowd
 }  // namespace
 
 std::span<const Key<scene::Crowd>> crowd_keys() {
-  static constexpr std::array<Key<scene::Crowd>, 12> keys{{
+  static constexpr std::array<Key<scene::Crowd>, 14> keys{{
       {"agents", "non-empty array of objects", "–", "", "Where the agents stand at the start.", Presence::required,
        read_agent_groups},
       {"exits", "array of objects, not empty unless every group has a `heading`", "–", "none",
@@ -72,6 +72,20 @@ std::span<const Key<scene::Crowd>> crowd_keys() {
        "τ: how fast an agent takes up its desired velocity (Helbing, Farkas & Vicsek 2000).", Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
          crowd.relaxation_time = values.number(value, positive);
+       }},
+      {"time_gap", "number > 0", "s", "`1`",
+       "T: an agent walks no faster than (s − ℓ)/T, s the distance to the nearest agent ahead in its way (the "
+       "collision-free speed model of Tordeux, Chraibi & Seyfried 2016, [crowds.md](crowds.md#parameters)).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
+         crowd.time_gap = values.number(value, positive);
+       }},
+      {"agent_length", "number > 0", "m", "`0.5`",
+       "ℓ: the headway at which an agent stops; the model's agent length is a body's diameter, 2 `body_radius` "
+       "(Tordeux, Chraibi & Seyfried 2016).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
+         crowd.agent_length = values.number(value, positive);
        }},
       {"agent_mass", "number > 0", "kg", "`80`", "m of the body forces (Helbing, Farkas & Vicsek 2000).",
        Presence::optional,

@@ -23,6 +23,15 @@ Real support_radius(const scene::Scene& scene) {
   return kernel_support_factor(scene.kernel) * static_cast<Real>(scene.smoothing_ratio * scene.particle_spacing);
 }
 
+// The neighbour search reaches the kernel's support and the headway range of the fastest agent
+// (desired speeds are truncated at three deviations above the mean): an agent ahead within
+// ℓ + T v0 of one slows it (passes::CrowdForceSettings::headway_speed).
+Real search_radius(const scene::Scene& scene) {
+  const scene::DesiredSpeed& speed = scene.crowd->desired_speed;
+  const Real fastest = static_cast<Real>(speed.mean + 3 * speed.deviation);
+  return std::max(support_radius(scene), passes::CrowdForceSettings::of(scene).headway_range(fastest));
+}
+
 const scene::Scene& checked(const scene::Scene& scene) {
   check_capabilities(scene);
   return scene;
@@ -41,8 +50,8 @@ CrowdSph::CrowdSph(const scene::Scene& scene)
     : scene_(checked(scene)),
       smoothing_length_(static_cast<Real>(scene.smoothing_ratio * scene.particle_spacing)),
       kernel_(make_kernel<2>(scene.kernel, smoothing_length_)),
-      interactions_(setup::grid_domain<2>(scene), support_radius(scene),
-                    setup::neighbor_skin(scene, support_radius(scene))),
+      interactions_(setup::grid_domain<2>(scene), search_radius(scene),
+                    setup::neighbor_skin(scene, search_radius(scene))),
       moving_walls_(setup::grid_domain<2>(scene)),
       navigation_(walls_and_navigation(scene, interactions_, moving_walls_)),
       exited_(scene.crowd->exits.size(), 0) {

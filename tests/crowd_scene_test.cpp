@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <string_view>
@@ -189,6 +191,31 @@ TEST(AgentPlacement, DesiredSpeedsFollowTheirDistribution) {
   // measured 0.2553, within the sampling error σ/√(2n) = 0.0013; bound 4 of those.
   EXPECT_NEAR(deviation, 0.2565, 0.005);
   for (const Real v : a) EXPECT_LE(std::abs(v - 1.34), 3 * 0.26 + 1e-6);
+}
+
+// 272 agents in the 20 m × 3.4 m band of a corridor, 3.4 persons/m² of it: more than a square
+// lattice holds a body diameter apart (0.486 m), so a hexagonal one, 0.506 m apart, every
+// agent inside the region and no two closer than a body diameter, across the periodic x too.
+TEST(AgentPlacement, TooDenseForASquareLatticeStandsOnAHexagonalOne) {
+  const scene::Scene corridor = test::crowd_corridor(272, 20, 4, 1);
+  const AgentStarts starts = place_agents(corridor);
+  ASSERT_EQ(starts.positions.size(), 272U);
+  const scene::Box& region = corridor.crowd->agents[0].region;
+  double closest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < starts.positions.size(); ++i) {
+    const Vector<2> p = starts.positions[i];
+    EXPECT_GE(p[0], region.min[0]) << i;
+    EXPECT_LE(p[0], region.max[0]) << i;
+    EXPECT_GE(p[1], region.min[1]) << i;
+    EXPECT_LE(p[1], region.max[1]) << i;
+    for (std::size_t j = 0; j < i; ++j) {
+      Vector<2> d = p - starts.positions[j];
+      d[0] -= static_cast<Real>(20 * std::round(static_cast<double>(d[0]) / 20));
+      closest = std::min(closest, static_cast<double>(d.norm()));
+    }
+  }
+  // Measured: 0.50633 m, the spacing; bound: a body diameter.
+  EXPECT_GE(closest, 0.5 - 1e-6);
 }
 
 }  // namespace

@@ -247,9 +247,9 @@ TEST(ThreadDeterminism, InflowChannelIsBitwiseIdentical) {
   EXPECT_TRUE(same_bytes(state(1), state(2)));
 }
 
-// A crowd of 1020 agents, 20 of them leaving through the door within the 400 steps (2 s): the
-// density and force passes, the navigation field and the removal of leavers, with the counts
-// and the peak density.
+// A crowd of 1020 agents, 20 of them by the door, some leaving through it within the 400 steps
+// (2 s): the density and force passes, the navigation field and the removal of leavers, with
+// the counts and the peak density.
 TEST(ThreadDeterminism, CrowdEvacuationIsBitwiseIdentical) {
   test::CrowdRoom room;
   room.length = 30;
@@ -267,7 +267,8 @@ TEST(ThreadDeterminism, CrowdEvacuationIsBitwiseIdentical) {
     return values;
   };
   const std::vector<Real> one = state(1);
-  EXPECT_GT(one.back(), 0) << "no agent left: the removal is not exercised";
+  // The exit count stands before the peak's four values.
+  EXPECT_GT(one[one.size() - 5], 0) << "no agent left: the removal is not exercised";
   EXPECT_TRUE(same_bytes(one, state(2)));
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 
 // The accelerations of a crowd's agents (docs/crowds.md, "Model"): relaxation toward each
-// agent's desired velocity, the SPH force of the uneasiness pressure, and the short-range body
-// repulsion between agents and from walls. One agent's sum gathers from its neighbours only.
+// agent's desired velocity at the speed the space ahead allows, the SPH force of the
+// uneasiness pressure, and the short-range body repulsion between agents and from walls. One
+// agent's sum gathers from its neighbours only.
 
 #include <cmath>
 #include <limits>
@@ -24,6 +25,8 @@ struct CrowdForceSettings {
   Real repulsion_range;     // B
   Real body_stiffness;      // k
   Real wall_offset;         // Δx/2: from a wall's outermost particle to its surface
+  Real time_gap;            // T of the speed from the space ahead
+  Real agent_length;        // ℓ: the headway at which that speed is zero
 
   static CrowdForceSettings of(const scene::Scene& scene) {
     const scene::Crowd& c = *scene.crowd;
@@ -33,8 +36,22 @@ struct CrowdForceSettings {
             static_cast<Real>(c.repulsion_strength),
             static_cast<Real>(c.repulsion_range),
             static_cast<Real>(c.body_stiffness),
-            static_cast<Real>(scene.particle_spacing / 2)};
+            static_cast<Real>(scene.particle_spacing / 2),
+            static_cast<Real>(c.time_gap),
+            static_cast<Real>(c.agent_length)};
   }
+
+  /// The speed an agent whose nearest agent ahead stands `headway` away walks at most:
+  /// V(s) = min(v0, max(0, (s − ℓ)/T)), the optimal speed function of the collision-free speed
+  /// model (Tordeux, Chraibi & Seyfried 2016, eq. 3), the required length ℓ + T v of Seyfried et
+  /// al. 2005 (eq. 3, d = a + b v) solved for v.
+  Real headway_speed(Real desired, Real headway) const {
+    return std::min(desired, std::max((headway - agent_length) / time_gap, Real(0)));
+  }
+
+  /// The distance within which an agent ahead can slow one of desired speed at most
+  /// `fastest`: V(s) = v0 needs s ≥ ℓ + T v0.
+  Real headway_range(Real fastest) const { return agent_length + time_gap * fastest; }
 
   /// The magnitude of the repulsion between bodies whose surfaces are `gap` apart (negative:
   /// overlapping): A exp(−gap/B) + k max(−gap, 0), Helbing, Farkas & Vicsek 2000, eq. 2 (its
@@ -45,7 +62,8 @@ struct CrowdForceSettings {
   }
 };
 
-/// a_i = (v0_i e_i − v_i)/τ (Helbing & Molnár 1995, eq. 2)
+/// a_i = (V(s_i) e_i − v_i)/τ (Helbing & Molnár 1995, eq. 2, with the speed V(s_i) ≤ v0_i that
+///       the headway s_i allows, Tordeux, Chraibi & Seyfried 2016, eqs. 3-4)
 ///       − Σ_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3, with m_j = 1 person)
 ///       + Σ_j f(|x_ij| − 2r) x_ij/|x_ij| + f(d_iW − r) n_iW (Helbing, Farkas & Vicsek 2000, eqs. 2, 3)
 /// with e_i = direction(i, x_i), the agent's desired direction, and d_iW, n_iW the distance to
@@ -62,14 +80,22 @@ void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings
   const auto v0 = agents[desired_speed];
   const Real contact_distance = 2 * settings.body_radius;
   for_each_fluid_particle<2>(interactions, x, VectorOutput<2>{acceleration}, [&](std::size_t i, const auto& neighbors) {
-    Vector<2> a = (v0[i] * direction(i, x[i]) - v[i]) / settings.relaxation_time;
+    const Vector<2> e = direction(i, x[i]);
+    const Vector<2> across(-e[1], e[0]);
+    Vector<2> a = Vector<2>::Zero();
+    Real headway2 = std::numeric_limits<Real>::infinity();
     const Real p_over_rho2 = p[i] / (rho[i] * rho[i]);
     neighbors.fluid_pairs([&](std::size_t j, const Vector<2>& x_ij, Real r2) {
       if (!(r2 > 0)) return;
       const Real r = std::sqrt(r2);
       a -= (p_over_rho2 + p[j] / (rho[j] * rho[j])) * kernel.derivative_over_r(r) * x_ij;
       a += settings.repulsion(r - contact_distance) / r * x_ij;
+      // j ahead of i in its desired direction, its body in i's way (closer to i's line of walking
+      // than a body diameter): the neighbours of Tordeux, Chraibi & Seyfried 2016, eq. 4, the
+      // nearest of which sets the headway s_i.
+      if (e.dot(x_ij) < 0 && std::abs(across.dot(x_ij)) <= contact_distance) headway2 = std::min(headway2, r2);
     });
+    a += (settings.headway_speed(v0[i], std::sqrt(headway2)) * e - v[i]) / settings.relaxation_time;
     neighbors.contacts([&](const auto& contact) {
       Real nearest2 = std::numeric_limits<Real>::infinity();
       Vector<2> nearest = Vector<2>::Zero();

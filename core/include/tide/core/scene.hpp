@@ -282,6 +282,8 @@ struct Crowd {
   double comfortable_density = 2;    // persons/m², ρ_c: no uneasiness up to it
   double stiffness = 1;              // K, m⁴/s²: uneasiness p = K max(ρ − ρ_c, 0)
   double relaxation_time = 0.5;      // s, τ
+  double time_gap = 1;               // s, T of the speed from the space ahead (Tordeux et al. 2016)
+  double agent_length = 0.5;         // m, ℓ: the headway at which an agent stops, a body's diameter
   double agent_mass = 80;            // kg, m
   double body_radius = 0.25;         // m, r
   double repulsion_strength = 2000;  // N, A

@@ -9,14 +9,16 @@
 namespace tide {
 
 /// The agents of a crowd at the start: each group's `count` agents on the rows of a square
-/// lattice centred in its region, filled row by row from the bottom, in group order.
+/// lattice centred in its region, filled row by row from the bottom, in group order; a group too
+/// dense for a square lattice a body diameter apart stands on a hexagonal one (rows sqrt(3)/2 of
+/// the spacing apart, every other one shifted by half a spacing).
 struct AgentStarts {
   std::vector<Vector<2>> positions;
   std::vector<std::size_t> groups;  // per agent, its index in crowd.agents
 };
 
 /// Throws scene::SceneError at /crowd/agents/k/count where two agents of a group would stand closer than
-/// a body diameter (2 crowd.body_radius) to one another.
+/// a body diameter (2 crowd.body_radius) to one another on either lattice.
 AgentStarts place_agents(const scene::Scene& scene);
 
 /// `count` desired speeds from crowd.desired_speed: normal by the Box–Muller transform of a
