@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -354,12 +355,20 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   const double wall = progress.wall_seconds();
   const double rate = static_cast<double>(particles) * static_cast<double>(simulation->step_count()) / wall;
   std::printf("run summary: %s\n", scene.source.c_str());
-  std::printf("  particles   %zu fluid, %zu wall, %zu removed (left the domain)\n", particles,
-              simulation->interactions().contact_particle_count(), simulation->removed_total());
+  // A crowd's agents leave through its exits, counted in crowd.csv; a fluid's particles are lost.
+  const bool crowd = scene.crowd.has_value();
+  std::size_t gone = simulation->removed_total();
+  if (crowd) {
+    const std::vector<std::size_t> out = simulation->crowd_status()->out;
+    gone = std::accumulate(out.begin(), out.end(), std::size_t{0});
+  }
+  std::printf("  particles   %zu %s, %zu wall, %zu %s\n", particles, crowd ? "agents at the start" : "fluid",
+              simulation->interactions().contact_particle_count(), gone,
+              crowd ? "out through the exits" : "removed (left the domain)");
   std::printf("  steps       %llu, simulated %.4g s\n", static_cast<unsigned long long>(simulation->step_count()),
               simulation->time() - scene.time.start);
-  std::printf("  wall time   %.2f s, %.3g M particle-steps/s (fluid particles x steps / wall time)\n", wall,
-              rate / 1e6);
+  std::printf("  wall time   %.2f s, %.3g M %s-steps/s (%s x steps / wall time)\n", wall, rate / 1e6,
+              crowd ? "agent" : "particle", crowd ? "agents at the start" : "fluid particles");
   std::printf("  time step   binding limit per step: %s\n", limit_counts(run_tally).c_str());
   print_solve_summary("density", run_solves.density);
   print_solve_summary("divergence", run_solves.divergence);
