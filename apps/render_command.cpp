@@ -130,9 +130,7 @@ int render_frames(const RenderOptions& options) {
     return exit_bad_input;
   }
 
-  const std::filesystem::path directory =
-      options.input.output_directory.empty() ? options.input.run_directory / "render" : options.input.output_directory;
-  std::filesystem::create_directories(directory);
+  const std::filesystem::path directory = picture_directory(options.input, "render");
   const render::PixelRegion plot = {10, 40, size.width - 170, size.height - 50};
   const render::PixelRegion bar = {size.width - 140, 70, 24, size.height - 120};
   const render::Camera camera = extent.dimension == 2 ? render::camera_2d(extent.lowest, extent.highest, plot)

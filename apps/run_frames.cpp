@@ -75,6 +75,13 @@ double particle_spacing(const FrameSelection& selection, const FrameFile& first_
   return spacing;
 }
 
+std::filesystem::path picture_directory(const FrameSelection& selection, const std::string& folder) {
+  const std::filesystem::path directory =
+      selection.output_directory.empty() ? selection.run_directory / folder : selection.output_directory;
+  std::filesystem::create_directories(directory);
+  return directory;
+}
+
 std::string numbered_file_name(const std::string& stem, std::size_t number, const std::string& extension) {
   char digits[24];
   std::snprintf(digits, sizeof digits, "%06zu", number);

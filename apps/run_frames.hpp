@@ -50,6 +50,9 @@ FramePositions take_positions(io::Frame& frame);
 /// `first_frame`, which the run started from on its lattice (printed, with how to set it).
 double particle_spacing(const FrameSelection& selection, const FrameFile& first_frame);
 
+/// selection.output_directory, or else `folder` in the run directory; created if it is not there.
+std::filesystem::path picture_directory(const FrameSelection& selection, const std::string& folder);
+
 /// "<stem>_000012<extension>".
 std::string numbered_file_name(const std::string& stem, std::size_t number, const std::string& extension);
 

@@ -66,9 +66,7 @@ int reconstruct_surfaces(const SurfaceOptions& options) {
     std::cerr << "tide surface: " << error.what() << '\n';
     return exit_bad_input;
   }
-  const std::filesystem::path directory =
-      options.input.output_directory.empty() ? options.input.run_directory / "surface" : options.input.output_directory;
-  std::filesystem::create_directories(directory);
+  const std::filesystem::path directory = picture_directory(options.input, "surface");
   for (const FrameFile& frame_file : frames) {
     FramePositions frame;
     try {

@@ -252,12 +252,8 @@ void IncompressibleSph<D>::compute_non_pressure_acceleration() {
   const passes::ViscositySettings viscosity =
       passes::viscosity_settings(scene_, reference_sound_speed_, kinematic_viscosity_, smoothing_length_);
   const std::span<const Index> phase = phases_ ? std::as_const(fluid_)[fluid_fields_.phase] : std::span<const Index>{};
-  std::vector<Real> dynamic_viscosity;
   passes::MultiphaseTerms multiphase;
-  if (phases_) {
-    for (const Phase& p : phases_->table) dynamic_viscosity.push_back(p.dynamic_viscosity);
-    multiphase = {phase, dynamic_viscosity, setup::wall_volume<D>(interactions_, rest_density_)};
-  }
+  if (phases_) multiphase = {phase, phases_->table, setup::wall_volume<D>(interactions_, rest_density_)};
   passes::fluid_acceleration<D, false>(kernel_, viscosity, {}, fluid_, fluid_fields_, interactions_, gravity_, {},
                                        phases_ ? &multiphase : nullptr);
 }

@@ -243,8 +243,7 @@ void Wcsph<D>::compute_acceleration(const Vector<D>& gravity) {
       passes::viscosity_settings(scene_, eos_.sound_speed(), kinematic_viscosity_, smoothing_length_);
   const passes::ArtificialStressSettings stress{static_cast<Real>(scene_.solver.artificial_stress),
                                                 1 / kernel_.value(static_cast<Real>(scene_.particle_spacing))};
-  std::vector<Real> dynamic_viscosity;
-  const passes::MultiphaseTerms multiphase = multiphase_terms(dynamic_viscosity);
+  const passes::MultiphaseTerms multiphase = multiphase_terms();
   const std::span<Real> scratch =
       phases_ ? std::span<Real>{} : interactions_.pass_scratch(fluid_.size() + interactions_.contact_particle_count());
   passes::fluid_acceleration<D>(kernel_, viscosity, stress, fluid_, fluid_fields_, interactions_, gravity, scratch,
@@ -252,18 +251,16 @@ void Wcsph<D>::compute_acceleration(const Vector<D>& gravity) {
 }
 
 template <int D>
-passes::MultiphaseTerms Wcsph<D>::multiphase_terms(std::vector<Real>& dynamic_viscosity) const {
+passes::MultiphaseTerms Wcsph<D>::multiphase_terms() const {
   if (!phases_) return {};
-  for (const Phase& phase : phases_->table) dynamic_viscosity.push_back(phase.dynamic_viscosity);
-  return {fluid_[fluid_fields_.phase], dynamic_viscosity, setup::wall_volume<D>(interactions_, eos_.rest_density())};
+  return {fluid_[fluid_fields_.phase], phases_->table, setup::wall_volume<D>(interactions_, eos_.rest_density())};
 }
 
 template <int D>
 void Wcsph<D>::compute_body_forces() {
   const passes::ViscositySettings viscosity =
       passes::viscosity_settings(scene_, eos_.sound_speed(), kinematic_viscosity_, smoothing_length_);
-  std::vector<Real> dynamic_viscosity;
-  const passes::MultiphaseTerms multiphase = multiphase_terms(dynamic_viscosity);
+  const passes::MultiphaseTerms multiphase = multiphase_terms();
   bodies_.for_each_force_field([&](const Contact<D>& body, VectorView<D> force) {
     passes::body_force<D>(kernel_, viscosity, body, fluid_, fluid_fields_, force, phases_ ? &multiphase : nullptr);
   });

@@ -71,7 +71,7 @@ void body_force(const RuntimeKernel<D>& kernel, const ViscositySettings& setting
                 if constexpr (Viscous) {
                   const Vector<D> v_jb = v[j] - body_velocity[b];
                   if constexpr (Multiphase && Model == scene::ViscosityModel::laminar) {
-                    const Real eta_j = phases->dynamic_viscosity[phases->phase[j]];
+                    const Real eta_j = phases->table[phases->phase[j]].dynamic_viscosity;
                     a_jb += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_j, eta_j, eta_j,
                                                                vj2 + vb2, v_jb, x_jb, r2, grad_w);
                   } else {

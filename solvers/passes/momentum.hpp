@@ -16,6 +16,7 @@
 #include "tide/core/scene.hpp"
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
+#include "tide/solvers/phases.hpp"
 
 namespace tide::passes {
 
@@ -110,12 +111,12 @@ inline Vector<D> multiphase_viscous_term(Real smoothing_length, Real inverse_mas
 
 }  // namespace detail
 
-/// What the momentum pass needs for several fluids: each particle's phase, each phase's dynamic
-/// viscosity, and the volume of a wall particle (walls fill the lattice: V = Δx^D up to the
-/// kernel's discretisation, the same 1/Σ_k W(|k|Δx) every phase's mass is set from).
+/// What the momentum pass needs for several fluids: each particle's phase, the phases (their
+/// dynamic viscosity), and the volume of a wall particle (walls fill the lattice: V = Δx^D up to
+/// the kernel's discretisation, the same 1/Σ_k W(|k|Δx) every phase's mass is set from).
 struct MultiphaseTerms {
   std::span<const Index> phase;
-  std::span<const Real> dynamic_viscosity;  // by phase
+  std::span<const Phase> table;  // Phases::table
   Real wall_volume = 0;
 };
 
@@ -202,7 +203,7 @@ void momentum(const RuntimeKernel<D>& kernel, const ViscositySettings& settings,
         if constexpr (Multiphase) {
           inverse_mass_i = 1 / mass[i];
           volume_i = mass[i] / rho_i;
-          eta_i = phases->dynamic_viscosity[phases->phase[i]];
+          eta_i = phases->table[phases->phase[i]].dynamic_viscosity;
           neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
             if (j == i) return;
             const Real rho_j = density[j];
@@ -213,7 +214,7 @@ void momentum(const RuntimeKernel<D>& kernel, const ViscositySettings& settings,
             if constexpr (WithPressure) a -= (inverse_mass_i * (pressure[i] * vi2 + pressure[j] * vj2)) * grad_w;
             if constexpr (Model == scene::ViscosityModel::laminar) {
               a += detail::multiphase_viscous_term<D>(settings.smoothing_length, inverse_mass_i, eta_i,
-                                                      phases->dynamic_viscosity[phases->phase[j]], vi2 + vj2,
+                                                      phases->table[phases->phase[j]].dynamic_viscosity, vi2 + vj2,
                                                       v_i - v[j], x_ij, r2, grad_w);
             } else {
               a += detail::viscous_term<D, Model>(settings, mass[j], rho_i, rho_j, v_i - v[j], x_ij, r2, grad_w);

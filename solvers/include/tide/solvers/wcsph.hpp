@@ -102,9 +102,9 @@ class Wcsph final : public Simulation<D> {
   void compute_acceleration(const Vector<D>& gravity);
   /// The fluid's force on every body particle, summed per body (RigidBodies::sum_forces).
   void compute_body_forces();
-  /// Each phase's dynamic viscosity (into `dynamic_viscosity`, which must outlive the terms), the
-  /// phase field and the wall volume; empty terms for a single fluid.
-  passes::MultiphaseTerms multiphase_terms(std::vector<Real>& dynamic_viscosity) const;
+  /// The phase field, the phases and the wall volume for the multiphase passes; empty terms for a
+  /// single fluid.
+  passes::MultiphaseTerms multiphase_terms() const;
   void add_surface_tension();
   /// Continuity density: ρ += Δt Dρ/Dt.
   void integrate_density(const Vector<D>& gravity, Real dt);
