@@ -1,6 +1,8 @@
 #include "tide/solvers/agent_placement.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <string>
@@ -52,6 +54,70 @@ void place_hexagonal(const scene::Box& region, const HexagonalLattice& lattice, 
   }
 }
 
+// A uniform number in (0, 1] from the generator's 53 high bits: the same on every platform.
+double uniform(std::mt19937_64& generator) { return (static_cast<double>(generator() >> 11) + 1) * 0x1.0p-53; }
+
+// Random sequential addition (Feder 1980): each agent at a uniformly random point of the region
+// that lies a body diameter or more from every agent placed before it (across a periodic axis
+// too), drawn again until one does. Its jamming limit covers 54.7% of the plane with discs, 2.8
+// persons/m² at r = 0.25 m; well below it an agent takes a few draws.
+void place_random(const scene::Scene& scene, std::size_t k, AgentStarts& starts) {
+  const scene::Crowd& crowd = *scene.crowd;
+  const scene::AgentGroup& group = crowd.agents[k];
+  const double diameter = 2 * crowd.body_radius;
+  std::array<double, 2> period{};  // 0 on an axis that does not wrap
+  std::array<std::size_t, 2> cells{};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (scene.domain.periodic[static_cast<std::size_t>(axis)])
+      period[static_cast<std::size_t>(axis)] = scene.domain.box.max[axis] - scene.domain.box.min[axis];
+    cells[static_cast<std::size_t>(axis)] = static_cast<std::size_t>(
+        std::max(1.0, std::ceil((group.region.max[axis] - group.region.min[axis]) / diameter)));
+  }
+  // The agents placed so far, by cell of a grid a body diameter wide over the region.
+  std::vector<std::vector<std::array<double, 2>>> grid(cells[0] * cells[1]);
+  const auto cell_of = [&](double x, int axis) {
+    return static_cast<long>(std::floor((x - group.region.min[axis]) / diameter));
+  };
+  const auto free = [&](const std::array<double, 2>& x) {
+    for (const double shift_x : {-period[0], 0.0, period[0]})
+      for (const double shift_y : {-period[1], 0.0, period[1]}) {
+        if ((shift_x != 0 && period[0] == 0) || (shift_y != 0 && period[1] == 0)) continue;
+        const double sx = x[0] + shift_x, sy = x[1] + shift_y;
+        for (long cx = cell_of(sx, 0) - 1; cx <= cell_of(sx, 0) + 1; ++cx)
+          for (long cy = cell_of(sy, 1) - 1; cy <= cell_of(sy, 1) + 1; ++cy) {
+            if (cx < 0 || cy < 0 || cx >= static_cast<long>(cells[0]) || cy >= static_cast<long>(cells[1])) continue;
+            for (const auto& y : grid[static_cast<std::size_t>(cx) * cells[1] + static_cast<std::size_t>(cy)])
+              if (std::hypot(sx - y[0], sy - y[1]) < diameter) return false;
+          }
+      }
+    return true;
+  };
+  std::seed_seq seed{static_cast<std::uint32_t>(crowd.desired_speed.seed),
+                     static_cast<std::uint32_t>(crowd.desired_speed.seed >> 32), static_cast<std::uint32_t>(k)};
+  std::mt19937_64 generator(seed);
+  constexpr int draws_per_agent = 10000;
+  for (std::size_t n = 0; n < group.count; ++n) {
+    int draws = 0;
+    std::array<double, 2> x{};
+    do {
+      if (++draws > draws_per_agent) {
+        throw scene::SceneError(scene.source, "/crowd/agents/" + std::to_string(k) + "/count",
+                                "at most as many agents as random placement stands a body diameter apart in the "
+                                "region (about 2.5 persons/m^2; placement \"lattice\" holds more)",
+                                std::to_string(group.count) + ", of which " + std::to_string(n) + " placed");
+      }
+      for (int axis = 0; axis < 2; ++axis)
+        x[static_cast<std::size_t>(axis)] =
+            group.region.min[axis] + uniform(generator) * (group.region.max[axis] - group.region.min[axis]);
+    } while (!free(x));
+    const auto cx = static_cast<std::size_t>(std::min(cell_of(x[0], 0), static_cast<long>(cells[0]) - 1));
+    const auto cy = static_cast<std::size_t>(std::min(cell_of(x[1], 1), static_cast<long>(cells[1]) - 1));
+    grid[cx * cells[1] + cy].push_back(x);
+    starts.positions.emplace_back(static_cast<Real>(x[0]), static_cast<Real>(x[1]));
+    starts.groups.push_back(k);
+  }
+}
+
 }  // namespace
 
 AgentStarts place_agents(const scene::Scene& scene) {
@@ -59,6 +125,10 @@ AgentStarts place_agents(const scene::Scene& scene) {
   const scene::Crowd& crowd = *scene.crowd;
   for (std::size_t k = 0; k < crowd.agents.size(); ++k) {
     const scene::AgentGroup& group = crowd.agents[k];
+    if (group.placement == scene::AgentPlacement::random) {
+      place_random(scene, k, starts);
+      continue;
+    }
     const double width = group.region.max[0] - group.region.min[0], height = group.region.max[1] - group.region.min[1];
     // The largest square lattice whose columns × rows hold the count.
     double spacing = std::sqrt(width * height / static_cast<double>(group.count));
@@ -98,12 +168,10 @@ AgentStarts place_agents(const scene::Scene& scene) {
 
 std::vector<Real> desired_speeds(const scene::DesiredSpeed& speed, std::size_t count) {
   std::mt19937_64 generator(speed.seed);
-  // A uniform number in (0, 1] from the generator's 53 high bits: the same on every platform.
-  const auto uniform = [&] { return (static_cast<double>(generator() >> 11) + 1) * 0x1.0p-53; };
   std::vector<Real> speeds;
   speeds.reserve(count);
   while (speeds.size() < count) {
-    const double u1 = uniform(), u2 = uniform();
+    const double u1 = uniform(generator), u2 = uniform(generator);
     const double normal = std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
     const double v = speed.mean + speed.deviation * normal;
     if (std::abs(normal) <= 3 && v > 0) speeds.push_back(static_cast<Real>(v));
