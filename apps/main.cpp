@@ -152,8 +152,21 @@ int main(int argc, char** argv) {
                      "field to colour by; a vector by its magnitude (default: velocity)");
   render->add_option("--colormap", render_options.colormap, "viridis, inferno or gray (default: viridis)");
   render->add_option("--size", render_options.size, "picture size WxH in pixels (default: 1280x720)");
-  render->add_flag("--surface", render_options.surface,
-                   "3D: draw the fluid surface (as tide surface reconstructs it) instead of the particles");
+  CLI::Option* surface_flag =
+      render->add_flag("--surface", render_options.surface,
+                       "3D: draw the fluid surface (as tide surface reconstructs it) instead of the particles");
+  render
+      ->add_flag("--heatmap", render_options.heatmap,
+                 "2D: colour the floor by the points' kernel-summed density (a crowd's agents/m^2)")
+      ->excludes(surface_flag);
+  render
+      ->add_option("--smoothing-length", render_options.smoothing_length,
+                   "h in m of the heat map's Wendland C2 kernel (default: 0.5, the shipped crowd scenes')")
+      ->check(CLI::PositiveNumber);
+  render
+      ->add_option("--heatmap-max", render_options.heatmap_max,
+                   "top of the heat map's colour scale (default: 6 agents/m^2)")
+      ->check(CLI::PositiveNumber);
   render->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
 
   std::filesystem::path keys_docs = "docs/scenes.md", keys_dictionary = "fuzz/scene.dict";
