@@ -467,6 +467,19 @@ TEST_F(TideCommand, CrowdRoomEvacuationRunsAndCountsEveryoneOut) {
   EXPECT_TRUE(fs::exists(out / "frames.xdmf"));
 }
 
+// Every scene the project ships passes tide check: the reader, the capability checks and the
+// set-up (particles, walls, a crowd's navigation field and placement) accept it.
+TEST_F(TideCommand, EveryShippedSceneIsAccepted) {
+  int scenes = 0;
+  for (const auto& entry : fs::directory_iterator(TIDE_SOURCE_SCENES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    ++scenes;
+    const CommandResult result = run_tide("check " + entry.path().string());
+    EXPECT_EQ(result.exit_code, 0) << entry.path() << ": " << result.output;
+  }
+  EXPECT_GT(scenes, 20);
+}
+
 TEST_F(TideCommand, CrowdWithAnAgentInAWallIsRefusedByRun) {
   const fs::path scene = directory_ / "crowd.json";
   std::ifstream shipped(fs::path(TIDE_SOURCE_SCENES_DIR) / "crowd_room_evacuation.json");
