@@ -241,6 +241,20 @@ TEST(AgentPlacement, RandomPlacementKeepsBodiesApartAndFollowsItsSeed) {
   EXPECT_NEAR(mean_x, 10, 3 * 0.456);
 }
 
+// Two groups in the same band, one on the lattice and one at random, then another at random:
+// every agent a body diameter or more from every other, whichever group it belongs to.
+TEST(AgentPlacement, GroupsPlacedAtRandomKeepClearOfTheGroupsBeforeThem) {
+  scene::Scene corridor = test::crowd_corridor(40, 20, 4, 1, "lattice");
+  scene::AgentGroup second = corridor.crowd->agents[0];
+  second.placement = scene::AgentPlacement::random;
+  second.heading = scene::Vec{-1, 0, 0};
+  corridor.crowd->agents.push_back(second);
+  corridor.crowd->agents.push_back(second);
+  const AgentStarts starts = place_agents(corridor);
+  ASSERT_EQ(starts.positions.size(), 120U);
+  EXPECT_GE(closest_pair_inside(starts, corridor.crowd->agents[0].region, 20), 0.5);
+}
+
 // 200 agents in that band, 2.9 persons/m² of it, past where random sequential addition jams:
 // refused at the group's count, naming the lattice that holds them.
 TEST(AgentPlacement, RandomPlacementTooDenseIsRefusedAtTheCount) {
