@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
 #include "movie.hpp"
 #include "run_command.hpp"
 #include "run_frames.hpp"
+#include "tide/core/parallel.hpp"
 #include "tide/io/frame_writer.hpp"
 #include "tide/render/camera.hpp"
 #include "tide/render/density_heatmap.hpp"
@@ -149,29 +151,43 @@ int render_frames(const RenderOptions& options) {
   const render::PixelRegion bar = {size.width - 140, 70, 24, size.height - 120};
   const render::Camera camera = extent.dimension == 2 ? render::camera_2d(extent.lowest, extent.highest, plot)
                                                       : render::camera_3d(extent.lowest, extent.highest, plot);
-  for (const FrameFile& file : frames) {
-    ColouredFrame frame;
-    try {
-      frame = read_coloured_frame(file.path, field);
-    } catch (const std::exception& error) {
-      std::cerr << "tide render: " << error.what() << '\n';
-      return exit_bad_input;
+  // Frames are drawn in parallel, one a task; HDF5 (Debian's build is not thread-safe) reads one
+  // frame at a time. A frame that cannot be read is reported after the others, the first in
+  // frame order, whatever the threads' order.
+  std::mutex reading;
+  std::vector<std::string> read_errors(frames.size());
+  parallel_blocks(frames.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const FrameFile& file = frames[f];
+      ColouredFrame frame;
+      try {
+        const std::lock_guard<std::mutex> lock(reading);
+        frame = read_coloured_frame(file.path, field);
+      } catch (const std::exception& error) {
+        read_errors[f] = error.what();
+        continue;
+      }
+      render::Image image(size.width, size.height, {0xff, 0xff, 0xff});
+      if (options.surface) {
+        const scene::TriangleMesh mesh =
+            surface::reconstruct_surface(frame.positions.values, {.particle_spacing = spacing});
+        render::draw_mesh(image, camera, mesh, water);
+      } else if (options.heatmap) {
+        render::draw_density_heatmap(image, camera, frame.positions.values, options.smoothing_length, *scale);
+        render::draw_colour_bar(image, bar, *scale, extent.label);
+      } else {
+        render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
+                               spacing / 2);
+        render::draw_colour_bar(image, bar, *scale, extent.label);
+      }
+      render::draw_time_stamp(image, frame.positions.time);
+      render::write_png(directory / numbered_file_name("frame", file.number, ".png"), image);
     }
-    render::Image image(size.width, size.height, {0xff, 0xff, 0xff});
-    if (options.surface) {
-      const scene::TriangleMesh mesh =
-          surface::reconstruct_surface(frame.positions.values, {.particle_spacing = spacing});
-      render::draw_mesh(image, camera, mesh, water);
-    } else if (options.heatmap) {
-      render::draw_density_heatmap(image, camera, frame.positions.values, options.smoothing_length, *scale);
-      render::draw_colour_bar(image, bar, *scale, extent.label);
-    } else {
-      render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
-                             spacing / 2);
-      render::draw_colour_bar(image, bar, *scale, extent.label);
-    }
-    render::draw_time_stamp(image, frame.positions.time);
-    render::write_png(directory / numbered_file_name("frame", file.number, ".png"), image);
+  });
+  for (const std::string& error : read_errors) {
+    if (error.empty()) continue;
+    std::cerr << "tide render: " << error << '\n';
+    return exit_bad_input;
   }
   const std::string what = options.surface ? "the surface" : options.heatmap ? "the density heat map" : options.field;
   std::cout << "tide render: " << frames.size() << " PNG frame(s) of " << what << " in " << directory.string() << '\n';
