@@ -93,7 +93,9 @@ int main(int argc, char** argv) {
       benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) { crowd_steps(state, agents, threads); })
           ->UseRealTime()
           ->Unit(benchmark::kMillisecond)
-          ->Iterations(agents >= 1'000'000 ? 5 : agents >= 100'000 ? 20 : 200);
+          ->Iterations(agents >= 1'000'000 ? 5
+                       : agents >= 100'000 ? 20
+                                           : 200);
     }
   }
   benchmark::Initialize(&argc, argv);
