@@ -126,22 +126,27 @@ try {
     const k = box.width / 960;
     return [box.x + k * (left + (x - x0) * scale), box.y + k * (540 - bottom - (y - y0) * scale)];
   };
+  // Down into the water (to half its depth, twice the fluid's mean height) and along it.
+  const width = frame.view[2] - frame.view[0], under = settled.mean_y;
   await page.mouse.move(...toPage(settled.obstacle_x, settled.obstacle_y));
   await page.mouse.down();
   for (let k = 0; k <= 30; ++k) {
-    await page.mouse.move(...toPage(settled.obstacle_x - 0.5 * Math.sin((Math.PI * k) / 30), 0.55 - (0.4 * k) / 30));
+    const s = k / 30;
+    await page.mouse.move(...toPage(settled.obstacle_x - 0.25 * width * s, settled.obstacle_y + (under - settled.obstacle_y) * s));
     await sleep(33);
   }
   for (let k = 0; k <= 30; ++k) {
-    await page.mouse.move(...toPage(settled.obstacle_x - 0.5 + (0.9 * k) / 30, 0.15));
+    await page.mouse.move(...toPage(settled.obstacle_x - 0.25 * width + 0.45 * width * (k / 30), under));
     await sleep(33);
   }
-  const dragged = await waitForState(port, 3000, (s) => s.mean_speed > 4 * settled.mean_speed && s.mean_speed > 0.05);
+  const dragged = await waitForState(port, 20000, (s) =>
+    s.obstacle_y < 2 * settled.mean_y && s.mean_speed > 4 * settled.mean_speed && s.mean_speed > 0.05);
   await page.mouse.up();
   console.log(`serve_test: obstacle (${settled.obstacle_x.toFixed(3)}, ${settled.obstacle_y.toFixed(3)}) -> ` +
     `(${dragged.obstacle_x.toFixed(3)}, ${dragged.obstacle_y.toFixed(3)}); mean fluid speed ` +
     `${settled.mean_speed.toFixed(4)} -> ${dragged.mean_speed.toFixed(4)} m/s`);
-  check(dragged.obstacle_y < 0.3 && Math.abs(dragged.obstacle_x - settled.obstacle_x) > 0.2, "the drag moved the obstacle into the water");
+  check(dragged.obstacle_y < 2 * settled.mean_y && Math.abs(dragged.obstacle_x - settled.obstacle_x) > 0.2,
+    "the drag moved the obstacle into the water");
   check(dragged.mean_speed > 4 * settled.mean_speed && dragged.mean_speed > 0.05, "the dragged obstacle set the fluid moving");
   await page.screenshot({ path: path.join(outputDir, "serve_drag.png") });
 
@@ -152,7 +157,7 @@ try {
     tilt.value = "40";
     tilt.dispatchEvent(new Event("input"));
   });
-  const tilted = await waitForState(port, 5000, (s) => s.mean_x > level.mean_x + 0.1);
+  const tilted = await waitForState(port, 20000, (s) => s.mean_x > level.mean_x + 0.1);
   console.log(`serve_test: tilt ${tilted.tilt}: mean fluid x ${level.mean_x.toFixed(3)} -> ${tilted.mean_x.toFixed(3)} m`);
   check(tilted.tilt === 40 && tilted.mean_x > level.mean_x + 0.1, "tilting gravity sends the water to the low side");
   await page.screenshot({ path: path.join(outputDir, "serve_tilt.png") });
