@@ -139,8 +139,8 @@ try {
     await page.mouse.move(...toPage(settled.obstacle_x - 0.25 * width + 0.45 * width * (k / 30), under));
     await sleep(33);
   }
-  const dragged = await waitForState(port, 20000, (s) =>
-    s.obstacle_y < 2 * settled.mean_y && s.mean_speed > 4 * settled.mean_speed && s.mean_speed > 0.05);
+  const dragged = await waitForState(port, 20000, (s) => s.obstacle_y < 2 * settled.mean_y &&
+    Math.abs(s.obstacle_x - settled.obstacle_x) > 0.2 && s.mean_speed > 4 * settled.mean_speed && s.mean_speed > 0.05);
   await page.mouse.up();
   console.log(`serve_test: obstacle (${settled.obstacle_x.toFixed(3)}, ${settled.obstacle_y.toFixed(3)}) -> ` +
     `(${dragged.obstacle_x.toFixed(3)}, ${dragged.obstacle_y.toFixed(3)}); mean fluid speed ` +
