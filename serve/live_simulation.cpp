@@ -22,11 +22,12 @@ std::string_view scheme_text(scene::Scheme scheme) { return scheme == scene::Sch
 
 }  // namespace
 
-LiveSimulation::LiveSimulation(scene::Scene scene, LiveOptions options) : base_(std::move(scene)), options_(options) {
+LiveSimulation::LiveSimulation(scene::Scene scene, LiveOptions options)
+    : base_(std::move(scene)), options_(options), settings_(settings_of(base_, 0)) {
   simulation_ = make_simulation<2>(base_);
   base_particles_ = simulation_->fluid().size();
   if (base_particles_ == 0) throw std::invalid_argument(base_.source + ": the scene has no fluid particles");
-  settings_ = settings_of(base_, base_particles_);
+  settings_.particles = base_particles_;
   rebuild();
   publish();
 }
