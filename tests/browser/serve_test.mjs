@@ -220,6 +220,36 @@ try {
   }
   check((await get(port, "/")).status === 200, "the page is still served");
 
+  // Every other control of the page, through its own elements.
+  const setControl = (id, value, event) => page.evaluate(([id, value, event]) => {
+    const element = document.getElementById(id);
+    if (element.type === "checkbox") element.checked = value; else element.value = value;
+    element.dispatchEvent(new Event(event));
+  }, [id, value, event]);
+  await setControl("colour", "pressure", "change");
+  check((await waitForState(port, 10000, (s) => s.colour === "pressure")).colour === "pressure", "the colour menu colours by pressure");
+  await setControl("viscosity", "-2.5", "input");
+  check(Math.abs((await waitForState(port, 10000, (s) => Math.abs(s.viscosity - 10 ** -2.5) < 1e-9)).viscosity - 10 ** -2.5) < 1e-9,
+    "the viscosity slider sets the viscosity");
+  await page.click("#pause");
+  const paused = await waitForState(port, 10000, (s) => s.paused);
+  await page.click("#step");
+  const stepped = await waitForState(port, 10000, (s) => s.steps === paused.steps + 1);
+  check(paused.paused && stepped.steps === paused.steps + 1, "Pause stops the steps and Step takes one");
+  await page.click("#pause");
+  check(!(await waitForState(port, 10000, (s) => !s.paused)).paused, "Run resumes");
+  const before = await state(port);
+  await page.click("#reset");
+  check((await waitForState(port, 10000, (s) => s.time < before.time)).time < before.time, "Reset starts again");
+  await setControl("particles", "4000", "change");
+  const refilled = await waitForState(port, 20000, (s) => Math.abs(s.particles - 4000) < 400);
+  check(Math.abs(refilled.particles - 4000) < 400, `the particle slider refills the tank (${refilled.particles} particles)`);
+  await setControl("scheme", "wcsph", "change");
+  await waitForState(port, 20000, (s) => s.scheme === "wcsph");
+  await setControl("surface-tension", true, "change");
+  const cohesive = await waitForState(port, 20000, (s) => s.scheme === "wcsph" && s.surface_tension);
+  check(cohesive.scheme === "wcsph" && cohesive.surface_tension, "the scheme menu and the surface-tension switch take effect");
+
   // The 2D-canvas fallback draws too.
   const fallback = await browser.newPage({ viewport: { width: 1280, height: 640 } });
   await fallback.goto(`${url}?renderer=canvas`);
