@@ -390,7 +390,9 @@ void warn_about(const scene::Scene& scene) {
   }
 }
 
-std::optional<scene::Scene> load(const std::filesystem::path& file) {
+}  // namespace
+
+std::optional<scene::Scene> load_scene(const std::filesystem::path& file) {
   try {
     scene::Scene scene = io::read_scene_file(file);
     check_capabilities(scene);
@@ -402,15 +404,13 @@ std::optional<scene::Scene> load(const std::filesystem::path& file) {
   }
 }
 
-}  // namespace
-
 std::filesystem::path run_output_directory(const RunOptions& options) {
   return options.output_directory.empty() ? std::filesystem::path("runs") / options.scene_file.stem()
                                           : options.output_directory;
 }
 
 int run_scene(const RunOptions& options) {
-  std::optional<scene::Scene> scene = load(options.scene_file);
+  std::optional<scene::Scene> scene = load_scene(options.scene_file);
   if (!scene) return exit_bad_input;
   if (options.until) {
     if (!(*options.until > scene->time.start)) {
@@ -425,7 +425,7 @@ int run_scene(const RunOptions& options) {
 }
 
 int check_scene(const std::filesystem::path& scene_file) {
-  const std::optional<scene::Scene> scene = load(scene_file);
+  const std::optional<scene::Scene> scene = load_scene(scene_file);
   if (!scene) return exit_bad_input;
   try {
     auto report = [&](const auto& simulation) {

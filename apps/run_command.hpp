@@ -3,10 +3,16 @@
 #include <filesystem>
 #include <optional>
 
+#include "tide/core/scene.hpp"
+
 namespace tide::app {
 
 /// Exit codes of the `tide` command.
 enum ExitCode : int { exit_ok = 0, exit_failure = 1, exit_bad_input = 2, exit_unstable = 3 };
+
+/// Reads and checks a scene file, warning about settings likely to go unstable; prints why and
+/// gives nothing when the file is not a valid scene.
+std::optional<scene::Scene> load_scene(const std::filesystem::path& file);
 
 struct RunOptions {
   std::filesystem::path scene_file;

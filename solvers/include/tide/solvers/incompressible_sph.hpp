@@ -52,6 +52,9 @@ class IncompressibleSph final : public Simulation<D> {
   StepReport step() override;
 
   const scene::Scene& scene() const override { return scene_; }
+  bool steer(const Eigen::Vector3d& displacement) override;
+  bool set_gravity(const Vector<D>& gravity) override;
+  bool set_kinematic_viscosity(Real viscosity) override;
   double time() const override { return time_; }
   std::uint64_t step_count() const override { return step_count_; }
   const ParticleSet<D>& fluid() const override { return fluid_; }
