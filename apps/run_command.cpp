@@ -329,7 +329,9 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
               << '\n';
   }
   const bool terminal = isatty(fileno(stdout)) != 0;
-  Progress progress(std::cout, terminal, options.quiet, scene.time.start, end_time, particles);
+  const std::uint64_t first_step = simulation->step_count();  // a resumed run's steps before this process
+  Progress progress(std::cout, terminal, options.quiet, scene.time.start, end_time, particles, simulation->time(),
+                    first_step);
 
   const auto record_series = [&] {
     for (auto& recorder : series) recorder.record(*simulation);
@@ -387,7 +389,8 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   write_series();
 
   const double wall = progress.wall_seconds();
-  const double rate = static_cast<double>(particles) * static_cast<double>(simulation->step_count()) / wall;
+  const std::uint64_t steps_here = simulation->step_count() - first_step;
+  const double rate = static_cast<double>(particles) * static_cast<double>(steps_here) / wall;
   std::printf("run summary: %s\n", scene.source.c_str());
   // A crowd's agents leave through its exits, counted in crowd.csv; a fluid's particles are lost.
   const bool crowd = scene.crowd.has_value();
@@ -399,8 +402,10 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   std::printf("  particles   %zu %s, %zu wall, %zu %s\n", particles, crowd ? "agents at the start" : "fluid",
               simulation->interactions().contact_particle_count(), gone,
               crowd ? "out through the exits" : "removed (left the domain)");
-  std::printf("  steps       %llu, simulated %.4g s\n", static_cast<unsigned long long>(simulation->step_count()),
+  std::printf("  steps       %llu, simulated %.4g s", static_cast<unsigned long long>(simulation->step_count()),
               simulation->time() - scene.time.start);
+  if (first_step > 0) std::printf(" (%llu steps since the resume)", static_cast<unsigned long long>(steps_here));
+  std::printf("\n");
   std::printf("  wall time   %.2f s, %.3g M %s-steps/s (%s x steps / wall time)\n", wall, rate / 1e6,
               crowd ? "agent" : "particle", crowd ? "agents at the start" : "fluid particles");
   std::printf("  time step   binding limit per step: %s\n", limit_counts(tallies.run).c_str());
