@@ -34,7 +34,8 @@ struct ResumeCase {
   int steps = 150;
 };
 
-StateArchive state_of(const Simulation<2>& simulation) {
+template <int D>
+StateArchive state_of(const Simulation<D>& simulation) {
   StateArchive archive;
   simulation.save(archive);
   return archive;
@@ -58,34 +59,59 @@ void expect_same_state(const StateArchive& straight, const StateArchive& resumed
   expect_same_entries(straight.all_counts(), resumed.all_counts());
 }
 
-class CheckpointResume : public testing::TestWithParam<ResumeCase> {};
-
-TEST_P(CheckpointResume, ContinuesBitForBit) {
-  const ResumeCase& c = GetParam();
-  const scene::Scene scene = c.scene();
-  const int half = c.steps / 2;
-  const fs::path file = fs::path(testing::TempDir()) / ("checkpoint_resume_" + c.name + ".h5");
-  const io::CheckpointIdentity identity{io::checkpoint_format_version, "test scene", "any", 2, {}};
+// `steps` steps straight against steps / 2, a checkpoint file, a fresh simulation restored from
+// it and the rest, resumed under 1 and under 2 threads.
+template <int D>
+void expect_resume_bit_for_bit(const scene::Scene& scene, int steps, const std::string& name) {
+  const int half = steps / 2;
+  const fs::path file = fs::path(testing::TempDir()) / ("checkpoint_resume_" + name + ".h5");
+  const io::CheckpointIdentity identity{io::checkpoint_format_version, "test scene", "any", D, {}};
 
   StateArchive straight;
   {
     const ThreadLimit limit(1);
-    const auto simulation = make_simulation<2>(scene);
+    const auto simulation = make_simulation<D>(scene);
     for (int k = 0; k < half; ++k) simulation->step();
     io::write_checkpoint(file, identity, simulation->step_count(), simulation->time(), state_of(*simulation));
-    for (int k = half; k < c.steps; ++k) simulation->step();
+    for (int k = half; k < steps; ++k) simulation->step();
     straight = state_of(*simulation);
   }
   for (const int threads : {1, 2}) {
     SCOPED_TRACE(std::to_string(threads) + " threads");
     const ThreadLimit limit(threads);
-    const auto simulation = make_simulation<2>(scene);
+    const auto simulation = make_simulation<D>(scene);
     simulation->restore(io::read_checkpoint(file, identity));
     EXPECT_EQ(simulation->step_count(), static_cast<std::uint64_t>(half));
-    for (int k = half; k < c.steps; ++k) simulation->step();
+    for (int k = half; k < steps; ++k) simulation->step();
     expect_same_state(straight, state_of(*simulation));
   }
   fs::remove(file);
+}
+
+class CheckpointResume : public testing::TestWithParam<ResumeCase> {};
+
+TEST_P(CheckpointResume, ContinuesBitForBit) {
+  const ResumeCase& c = GetParam();
+  expect_resume_bit_for_bit<2>(c.scene(), c.steps, c.name);
+}
+
+// In 3D: a 5 × 5 × 10 column carrying a light box (the bodies' quaternion and angular momentum),
+// 150 steps.
+TEST(CheckpointResume3D, DamBreakWithABodyContinuesBitForBit) {
+  scene::Scene s;
+  s.source = "small 3D dam break";
+  s.dimension = 3;
+  s.particle_spacing = 0.02;
+  s.materials.push_back({"water", 1000, 1e-6, std::nullopt, 2.0});
+  s.fluid.push_back({0, scene::Box{{0, 0, 0}, {0.1, 0.1, 0.2}}});
+  s.walls.container = scene::Container{scene::Box{{0, 0, 0}, {0.3, 0.1, 0.3}}, true};
+  s.domain.box = {{-0.08, -0.08, -0.08}, {0.38, 0.18, 0.6}};
+  s.gravity = {0, 0, -9.81};
+  scene::Obstacle box;
+  box.shape = scene::Box{{0.02, 0.02, 0.12}, {0.08, 0.08, 0.16}};
+  box.body = scene::Body{400, {}};
+  s.walls.obstacles.push_back(box);
+  expect_resume_bit_for_bit<3>(s, 150, "dam_break_3d");
 }
 
 scene::Scene wcsph(scene::DensityMethod density, scene::Shifting shifting, double delta_sph = 0.1,
