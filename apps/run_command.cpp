@@ -281,10 +281,12 @@ struct CheckpointTally {
 template <int D>
 int run(const scene::Scene& scene, const RunOptions& options, const std::filesystem::path& output_directory) {
   const std::filesystem::path checkpoint_file = checkpoint_path(output_directory);
+  const bool checkpoints_asked = options.checkpoint_every || options.checkpoint_wall;
   io::CheckpointIdentity identity;
   std::optional<StateArchive> resumed;
   try {
-    identity = io::checkpoint_identity(options.scene_file, D);
+    // A run that neither resumes nor writes checkpoints does not read its scene file again.
+    if (checkpoints_asked || !options.resume.empty()) identity = io::checkpoint_identity(options.scene_file, D);
     if (!options.resume.empty()) resumed = io::read_checkpoint(checkpoint_file, identity);
   } catch (const std::runtime_error& error) {
     std::cerr << "tide: cannot resume: " << error.what() << '\n';
