@@ -176,6 +176,19 @@ TEST_F(ResumeCommand, ResumeCanRunPastTheEndTime) {
   expect_same_frames(straight, split);
 }
 
+// --checkpoint-wall 0.001: a checkpoint at the first step 1 ms of wall-clock time after the last
+// one; the 125 steps take longer than that, so there is at least one besides the one at the end.
+TEST_F(ResumeCommand, WallClockIntervalWritesCheckpoints) {
+  const fs::path run = directory_ / "run";
+  const CommandResult result = run_tide("run --quiet --checkpoint-wall 0.001 --until 0.01 --out " + run.string() + " " +
+                                        write_scene("a.json").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const auto at = result.output.find("checkpoints ");
+  ASSERT_NE(at, std::string::npos) << result.output;
+  EXPECT_GE(std::stoul(result.output.substr(at + 12)), 2u) << result.output;
+  EXPECT_TRUE(fs::exists(run / "checkpoint.h5"));
+}
+
 TEST_F(ResumeCommand, CheckpointOfAnotherSceneIsRefused) {
   const fs::path run = directory_ / "run";
   ASSERT_EQ(run_tide("run --quiet --checkpoint-every 0.02 --until 0.02 --out " + run.string() + " " +
