@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -315,7 +316,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   if (resumed) {
     try {
       state.restore(*resumed);
-    } catch (const std::runtime_error& error) {
+    } catch (const std::exception& error) {  // an entry missing or of another length: a damaged checkpoint
       std::cerr << "tide: cannot resume from " << checkpoint_file.string() << ": " << error.what() << '\n';
       return exit_bad_input;
     }
