@@ -48,6 +48,7 @@ void expect_same_entries(const Map& straight, const Map& resumed) {
     const auto other = resumed.find(path);
     ASSERT_NE(other, resumed.end()) << path;
     ASSERT_EQ(values.size(), other->second.size()) << path;
+    if (values.empty()) continue;  // memcmp may not be given the null data() of an empty vector
     EXPECT_EQ(std::memcmp(values.data(), other->second.data(), values.size() * sizeof(values[0])), 0)
         << path << " differs after the resume";
   }

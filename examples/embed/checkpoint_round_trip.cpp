@@ -33,7 +33,8 @@ bool same_state(const tide::StateArchive& a, const tide::StateArchive& b) {
   for (const auto& [path, values] : a.all_reals()) {
     const auto other = b.all_reals().find(path);
     if (other == b.all_reals().end() || other->second.size() != values.size() ||
-        std::memcmp(values.data(), other->second.data(), values.size() * sizeof(tide::Real)) != 0) {
+        (!values.empty() &&
+         std::memcmp(values.data(), other->second.data(), values.size() * sizeof(tide::Real)) != 0)) {
       std::printf("  %s differs after the resume\n", path.c_str());
       return false;
     }
