@@ -78,6 +78,14 @@ int main(int argc, char** argv) {
   run->add_option("--out", run_options.output_directory, "output directory (default: runs/<scene name>)");
   run->add_option("--until", run_options.until, "end time in s, overriding the scene's");
   run->add_flag("--quiet", run_options.quiet, "no progress output");
+  run->add_option("--checkpoint-every", run_options.checkpoint_every,
+                  "write <out>/checkpoint.h5 every T s of simulated time (and after the last step)")
+      ->check(CLI::PositiveNumber);
+  run->add_option("--checkpoint-wall", run_options.checkpoint_wall,
+                  "write <out>/checkpoint.h5 every S s of wall-clock time (and after the last step)")
+      ->check(CLI::PositiveNumber);
+  run->add_option("--resume", run_options.resume,
+                  "continue the run in DIR from its checkpoint.h5 (the scene: the one given, else the checkpoint's)");
   bool render_after_run = false;
   run->add_flag("--render", render_after_run, "render the frames as PNG (and MP4 with ffmpeg) at the end: tide render");
   run->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
@@ -211,7 +219,7 @@ int main(int argc, char** argv) {
     std::optional<tide::ThreadLimit> limit;
     if (threads > 0) limit.emplace(threads);
     if (*run) {
-      if (run_options.scene_file.empty()) run_options.scene_file = default_scene();
+      if (run_options.scene_file.empty() && run_options.resume.empty()) run_options.scene_file = default_scene();
       const int status = tide::app::run_scene(run_options);
       if (status != tide::app::exit_ok || !render_after_run) return status;
       render_options.input.run_directory = tide::app::run_output_directory(run_options);

@@ -197,12 +197,8 @@ TEST(ThreadDeterminism, DamBreakIntoATurningPaddleIsBitwiseIdentical) {
     SCOPED_TRACE(static_cast<int>(scheme));
     const auto state = [scheme](int threads) {
       const ThreadLimit limit(threads);
-      scene::Scene s = small_dam_break_2d();
+      scene::Scene s = small_dam_break_with_paddle_2d();
       s.solver.scheme = scheme;
-      scene::Obstacle paddle;
-      paddle.shape = scene::Box{{0.34, 0.08, 0}, {0.46, 0.11, 0}};
-      paddle.motion = scene::Rotation{{0.4, 0.095, 0}, {0, 0, 1}, 8.0, 0.05};
-      s.walls.obstacles.push_back(paddle);
       return state_after_steps(*make_simulation<2>(s), 200);
     };
     EXPECT_TRUE(same_bytes(state(1), state(2)));

@@ -72,6 +72,8 @@ class IncompressibleSph final : public Simulation<D> {
   std::size_t neighbor_builds() const override { return interactions_.builds(); }
   const Pipeline& pipeline() const override { return pipeline_; }
   double bytes_per_particle() const override;
+  void save(StateArchive& archive) const override;
+  void restore(const StateArchive& archive) override;
   /// The phases of a multiphase scene; null for a single fluid.
   const Phases* phases() const { return phases_ ? &*phases_ : nullptr; }
 

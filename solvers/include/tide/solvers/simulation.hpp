@@ -11,6 +11,7 @@
 #include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
+#include "tide/core/state_archive.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/crowd_status.hpp"
 #include "tide/solvers/interactions.hpp"
@@ -67,6 +68,12 @@ class Simulation {
   /// Replaces the fluid's kinematic viscosity, m²/s: only for laminar viscosity with one fluid.
   virtual bool set_kinematic_viscosity(Real /*viscosity*/) { return false; }
 
+  /// Puts everything the next step reads into `archive` (a checkpoint, docs/output.md).
+  virtual void save(StateArchive& archive) const = 0;
+  /// Continues from what save() put for the same scene into `archive`: every step after this one
+  /// gives the same bits as it would have after save(). std::runtime_error naming the entry when
+  /// the archive lacks one or holds it at another length.
+  virtual void restore(const StateArchive& archive) = 0;
   /// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
   virtual double bytes_per_particle() const = 0;
   /// Those bytes item by item (MemoryUsage); a scheme that does not itemise them reports one item.

@@ -77,6 +77,8 @@ class Wcsph final : public Simulation<D> {
   double bytes_per_particle() const override;
   MemoryUsage memory_usage() const override;
   const RigidBodies<D>* bodies() const override { return &bodies_; }
+  void save(StateArchive& archive) const override;
+  void restore(const StateArchive& archive) override;
 
  private:
   void set_hydrostatic_density();
