@@ -174,12 +174,11 @@ int render_frames(const RenderOptions& options) {
         render::draw_mesh(image, camera, mesh, water);
       } else if (options.heatmap) {
         render::draw_density_heatmap(image, camera, frame.positions.values, options.smoothing_length, *scale);
-        render::draw_colour_bar(image, bar, *scale, extent.label);
       } else {
         render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
                                spacing / 2);
-        render::draw_colour_bar(image, bar, *scale, extent.label);
       }
+      if (!options.surface) render::draw_colour_bar(image, bar, *scale, extent.label);
       render::draw_time_stamp(image, frame.positions.time);
       render::write_png(directory / numbered_file_name("frame", file.number, ".png"), image);
     }

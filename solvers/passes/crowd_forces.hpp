@@ -92,7 +92,8 @@ void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings
   const Real contact_distance = 2 * settings.body_radius;
   for_each_fluid_particle<2>(interactions, x, VectorOutput<2>{acceleration}, [&](std::size_t i, const auto& neighbors) {
     Vector<2> a = Vector<2>::Zero();
-    Vector<2> turned = direction(i, x[i]);
+    const Vector<2> desired = direction(i, x[i]);
+    Vector<2> turned = desired;
     const Real p_over_rho2 = p[i] / (rho[i] * rho[i]);
     neighbors.fluid_pairs([&](std::size_t j, const Vector<2>& x_ij, Real r2) {
       if (!(r2 > 0)) return;
@@ -102,7 +103,7 @@ void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings
       turned += settings.steering(r) / r * x_ij;
     });
     const Real turned_norm = turned.norm();
-    const Vector<2> e = turned_norm > 0 ? Vector<2>(turned / turned_norm) : direction(i, x[i]);
+    const Vector<2> e = turned_norm > 0 ? Vector<2>(turned / turned_norm) : desired;
     const Vector<2> across(-e[1], e[0]);
     // The agents ahead of i in its walking direction whose bodies are in its way (closer to its
     // line of walking than a body diameter): the neighbours of Tordeux, Chraibi & Seyfried 2016,
