@@ -10,7 +10,8 @@
 namespace tide::setup {
 
 /// Runs `edit` on `fluid`: std::logic_error when `step_count` is not 0 (the start is behind) or
-/// when `edit` changed the particle count.
+/// when `edit` changed the particle count (a caller's error that leaves the scheme's other arrays
+/// at the old count: the simulation is not to be stepped after it).
 template <int D>
 void edit_start_fields(std::uint64_t step_count, ParticleSet<D>& fluid, FunctionRef<void(ParticleSet<D>&)> edit);
 
