@@ -7,9 +7,14 @@ import math
 import os
 import pathlib
 
+import numpy as np
 import pytest
 
+import tidesph
+
 GRAVITY = 9.81  # m/s²
+REAL = np.float64 if tidesph.precision == "double" else np.float32  # the build's tide::Real
+EPS = float(np.finfo(REAL).eps)
 
 
 def hydrostatic_tank(height=0.5, width=0.5, rows=25):

@@ -8,6 +8,8 @@ import pathlib
 import numpy as np
 import pytest
 
+from conftest import EPS
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
@@ -28,7 +30,7 @@ def test_dam_break_front():
     history, stats = load_example().front_history(columns=20, until_T=2.5, samples=25)
     T, Z = history[:, 0], history[:, 1]
     assert stats["steps"] > 0
-    assert Z[0] == pytest.approx(1 - 0.5 / 20, rel=1e-12)  # the last lattice column: half a spacing inside
+    assert Z[0] == pytest.approx(1 - 0.5 / 20, rel=4 * EPS)  # the last lattice column: half a spacing inside
     assert np.all(np.diff(Z) >= 0)
     # Ritter's dry-bed front, 2 sqrt(g H) with H = 2a, is the fastest a collapsing column can run
     # (shallow water, no friction): Z <= 1 + 2T.

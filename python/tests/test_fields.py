@@ -7,13 +7,14 @@ import numpy as np
 import pytest
 
 import tidesph
+from conftest import EPS, REAL
 
 
 def test_views_share_the_simulations_memory(dam_break):
     sim = tidesph.Simulation(dam_break)
     density = sim.field("density")
     assert density.shape == (sim.particle_count,)
-    assert density.dtype == np.dtype(tidesph.precision)
+    assert density.dtype == REAL
     assert not density.flags.owndata
     assert np.shares_memory(density, sim.field("density"))
     x, y = sim.field("position")
@@ -88,7 +89,8 @@ def test_set_fields_recomputes_the_pressure_from_the_density(dam_break):
     np.testing.assert_array_equal(by_id(sim, "density"), density[np.argsort(ids)])
     p = sim.field("pressure")
     expected = rho0 * c0**2 / gamma * ((sim.field("density") / rho0) ** gamma - 1)
-    np.testing.assert_allclose(p, expected, rtol=1e-12)
+    # x^7 − 1 with x ≈ 1 in the build's precision: rounding of a few ulp of 1, times ρ0 c0² / γ.
+    np.testing.assert_allclose(p, expected, rtol=0, atol=100 * EPS * rho0 * c0**2 / gamma)
     assert p.max() > 0.9 * rho0 * c0**2 / gamma * (1.01**gamma - 1)
 
 
@@ -107,7 +109,9 @@ def test_set_velocity_moves_the_fluid(dam_break, scheme):
     # A uniform velocity in a fluid at rest density, no gravity: the first step carries the column
     # 0.5 dt to the right; the wall beside it slows only the particles near it.
     shift = by_id(sim, "position")[0] - x0
-    assert np.median(shift) == pytest.approx(0.5 * dt, rel=1e-6)
+    # Within 1e-6 (the interior's acceleration is round-off), or in float two ulp of the positions
+    # (up to 0.6 m) the shift is the difference of.
+    assert np.median(shift) == pytest.approx(0.5 * dt, rel=1e-6, abs=2 * float(np.spacing(REAL(0.6))))
 
 
 def test_set_fields_checks_before_it_sets(dam_break):
