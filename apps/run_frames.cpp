@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
-#include <regex>
 #include <stdexcept>
 
 #include "tide/surface/particle_spacing.hpp"
@@ -24,24 +23,6 @@ std::optional<std::size_t> frame_number(const std::string& text, const std::stri
 }
 
 }  // namespace
-
-std::vector<FrameFile> list_frames(const std::filesystem::path& run_directory) {
-  std::error_code error;
-  if (!std::filesystem::is_directory(run_directory, error))
-    throw std::invalid_argument(run_directory.string() + ": no such run directory");
-  static const std::regex frame_name(R"(frames_([0-9]{6,})\.h5)");
-  std::vector<FrameFile> frames;
-  for (const auto& entry : std::filesystem::directory_iterator(run_directory)) {
-    std::smatch match;
-    const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file() && std::regex_match(name, match, frame_name))
-      frames.push_back({std::stoul(match[1].str()), entry.path()});
-  }
-  if (frames.empty())
-    throw std::invalid_argument(run_directory.string() + ": no frame files (frames_NNNNNN.h5) in this directory");
-  std::sort(frames.begin(), frames.end(), [](const FrameFile& a, const FrameFile& b) { return a.number < b.number; });
-  return frames;
-}
 
 std::vector<FrameFile> select_frames(const std::vector<FrameFile>& frames, const std::string& range) {
   const std::size_t colon = range.find(':');

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tide/io/frame_files.hpp"
 #include "tide/io/frame_writer.hpp"
 
 namespace tide::app {
@@ -22,14 +23,8 @@ struct FrameSelection {
   std::optional<double> particle_spacing;  // empty: estimated from the run's first frame
 };
 
-struct FrameFile {
-  std::size_t number = 0;
-  std::filesystem::path path;
-};
-
-/// The frame files of `run_directory` in frame order; std::invalid_argument naming the directory
-/// when it does not exist or holds no frame file.
-std::vector<FrameFile> list_frames(const std::filesystem::path& run_directory);
+using io::FrameFile;
+using io::list_frames;
 
 /// The frames numbered within `range`: "A:B" (A to B, both included), "A:" (from A), ":B" (to B),
 /// "A" (frame A alone) or "" (all). std::invalid_argument for a range that is not one of these

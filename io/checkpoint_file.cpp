@@ -151,15 +151,19 @@ CheckpointIdentity checkpoint_identity(const fs::path& scene_file, int dimension
 std::string scene_file_hash(const fs::path& scene_file) {
   std::ifstream in(scene_file, std::ios::binary);
   if (!in) throw std::runtime_error(scene_file.string() + ": cannot read the scene file");
+  return scene_text_hash(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+}
+
+std::string scene_text_hash(std::string_view text) {
   // FNV-1a, 64 bits (Fowler, Noll & Vo): the offset basis and prime of its specification.
   std::uint64_t hash = 14695981039346656037ULL;
-  for (std::istreambuf_iterator<char> it(in), end; it != end; ++it) {
-    hash ^= static_cast<unsigned char>(*it);
+  for (const char c : text) {
+    hash ^= static_cast<unsigned char>(c);
     hash *= 1099511628211ULL;
   }
-  std::array<char, 17> text{};
-  std::snprintf(text.data(), text.size(), "%016llx", static_cast<unsigned long long>(hash));
-  return text.data();
+  std::array<char, 17> digits{};
+  std::snprintf(digits.data(), digits.size(), "%016llx", static_cast<unsigned long long>(hash));
+  return digits.data();
 }
 
 void write_checkpoint(const fs::path& file, const CheckpointIdentity& identity, std::uint64_t step, double time,

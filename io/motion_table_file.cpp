@@ -1,39 +1,14 @@
 #include "motion_table_file.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <fstream>
+#include <stdexcept>
 #include <string>
-#include <string_view>
 #include <system_error>
 
+#include "csv_numbers.hpp"
 #include "scene_text.hpp"
 
 namespace tide::io {
-namespace {
-
-// The comma-separated numbers of one row, or an error naming the first field that is not one.
-std::vector<double> numbers_of(std::string_view row, std::size_t line) {
-  std::vector<double> numbers;
-  while (true) {
-    const std::size_t comma = row.find(',');
-    std::string_view field = row.substr(0, comma);
-    while (!field.empty() && (field.front() == ' ' || field.front() == '\t')) field.remove_prefix(1);
-    while (!field.empty() && (field.back() == ' ' || field.back() == '\t' || field.back() == '\r'))
-      field.remove_suffix(1);
-    double value = 0;
-    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-    if (field.empty() || error != std::errc() || end != field.data() + field.size() || !std::isfinite(value)) {
-      throw MotionTableError("line " + std::to_string(line) + ": expected a finite number, got \"" +
-                             std::string(field) + "\"");
-    }
-    numbers.push_back(value);
-    if (comma == std::string_view::npos) return numbers;
-    row.remove_prefix(comma + 1);
-  }
-}
-
-}  // namespace
 
 std::vector<scene::MotionSample> read_motion_table(const std::filesystem::path& path, int dimension) {
   std::error_code error;
@@ -55,7 +30,12 @@ std::vector<scene::MotionSample> read_motion_table(const std::filesystem::path& 
   while (std::getline(in, text)) {
     ++line;
     if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const std::vector<double> numbers = numbers_of(text, line);
+    std::vector<double> numbers;
+    try {
+      numbers = csv_numbers(text, line, true);
+    } catch (const std::invalid_argument& bad_row) {
+      throw MotionTableError(bad_row.what());
+    }
     if (numbers.size() != columns) {
       throw MotionTableError("line " + std::to_string(line) + ": expected " + std::to_string(columns) + " numbers (" +
                              layout + "), got " + std::to_string(numbers.size()));

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The full test job (CI runs it through .ci/run): installs the Debian packages, checks that
 # every C++ source is formatted by the repository's .clang-format, then
-#   1. builds everything with -Werror in double precision (build/) and runs every test, the
-#      browser test of tide serve among them (npm ci installs its playwright-core first);
+#   1. builds everything with -Werror in double precision (build/), the tidesph Python module
+#      among it, and runs every test, the browser test of tide serve (npm ci installs its
+#      playwright-core first) and the module's pytest suite (/usr/bin/python3) among them;
 #   2. builds and runs the tests in single precision (build-float/);
 #   3. installs the double build and builds + runs examples/embed against the installed package;
 #   4. builds the unit tests (target tide_unit_tests) with AddressSanitizer +
@@ -34,7 +35,8 @@ section "Formatting (clang-format, .clang-format)"
 git ls-files -z '*.cpp' '*.hpp' | xargs -0 clang-format --dry-run --Werror
 
 section "Double precision, -Werror: configure and build (build/)"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTIDE_REAL=double -DTIDE_WERROR=ON -DTIDE_SANITIZE=
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTIDE_REAL=double -DTIDE_WERROR=ON -DTIDE_SANITIZE= \
+  -DTIDE_BUILD_PYTHON=ON
 cmake --build build -j "$jobs"
 
 section "Double precision: tests"
@@ -43,9 +45,9 @@ ctest --test-dir build --output-on-failure --no-tests=error -j "$jobs"
 section "Single precision, -Werror: configure and build the tests (build-float/)"
 # Without precompiled headers: this build keeps GCC's -Warray-bounds and -Wstringop-overread,
 # which the others leave out (cmake/TidePrecompiledHeaders.cmake), and checks that every file
-# includes what it uses.
+# includes what it uses. The tidesph Python module is built and tested in the double build only.
 cmake -S . -B build-float -DCMAKE_BUILD_TYPE=Release -DTIDE_REAL=float -DTIDE_WERROR=ON -DTIDE_SANITIZE= \
-  -DTIDE_BUILD_BENCH=OFF -DTIDE_PRECOMPILE_HEADERS=OFF
+  -DTIDE_BUILD_BENCH=OFF -DTIDE_PRECOMPILE_HEADERS=OFF -DTIDE_BUILD_PYTHON=OFF
 cmake --build build-float -j "$jobs"
 
 section "Single precision: tests"
@@ -67,7 +69,8 @@ section "AddressSanitizer + UndefinedBehaviorSanitizer: configure and build the 
 # profiling build's -O3 -g (RelWithDebInfo) took 3.5x the compile time and 2.7x the memory per
 # file (the WCSPH scheme, then one file: 360 s and 4.7 GB against 104 s and 1.8 GB).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1 -DNDEBUG" \
-  -DTIDE_SANITIZE=address,undefined -DTIDE_WERROR=OFF -DTIDE_BUILD_BENCH=OFF -DTIDE_BUILD_APPS=OFF
+  -DTIDE_SANITIZE=address,undefined -DTIDE_WERROR=OFF -DTIDE_BUILD_BENCH=OFF -DTIDE_BUILD_APPS=OFF \
+  -DTIDE_BUILD_PYTHON=OFF
 cmake --build build-asan -j "$jobs" --target tide_unit_tests
 
 section "AddressSanitizer + UndefinedBehaviorSanitizer: unit tests"
@@ -78,7 +81,7 @@ ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=1:strict_init_order=
 section "libFuzzer, clang + AddressSanitizer + UndefinedBehaviorSanitizer: configure and build (build-fuzz/)"
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   -DTIDE_BUILD_FUZZERS=ON -DTIDE_SANITIZE=address,undefined -DTIDE_WERROR=ON \
-  -DTIDE_BUILD_TESTS=OFF -DTIDE_BUILD_BENCH=OFF -DTIDE_BUILD_APPS=OFF
+  -DTIDE_BUILD_TESTS=OFF -DTIDE_BUILD_BENCH=OFF -DTIDE_BUILD_APPS=OFF -DTIDE_BUILD_PYTHON=OFF
 cmake --build build-fuzz -j "$jobs" --target scene_parser_fuzzer
 
 fuzz_seconds="${FUZZ_SECONDS:-60}"

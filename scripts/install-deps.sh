@@ -17,6 +17,8 @@ packages=(
   clang clang-format             # second compiler, formatting
   libclang-rt-14-dev             # sanitizer runtimes and libFuzzer for clang
   gnuplot-nox                    # plots of benchmark and validation results
+  pybind11-dev python3-dev       # python/: the tidesph module, for Debian's /usr/bin/python3
+  python3-numpy python3-pytest   # python/: its arrays and its tests
 )
 
 installed() {

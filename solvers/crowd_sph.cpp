@@ -10,6 +10,7 @@
 #include "passes/crowd_forces.hpp"
 #include "passes/density_summation.hpp"
 #include "simulation_setup.hpp"
+#include "start_edit.hpp"
 #include "state_check.hpp"
 #include "tide/core/log.hpp"
 #include "tide/core/parallel.hpp"
@@ -97,11 +98,21 @@ CrowdSph::CrowdSph(const scene::Scene& scene)
       static_cast<Real>(std::min(crowd.relaxation_time / 10, 0.2 * std::sqrt(crowd.agent_mass / crowd.body_stiffness)));
   time_ = scene.time.start;
 
+  start();
+  pipeline_ = build_pipeline();
+}
+
+void CrowdSph::start() {
   search_and_sum_density();
   compute_acceleration();
   check_state();
   record_peak();
-  pipeline_ = build_pipeline();
+}
+
+void CrowdSph::edit_start(FunctionRef<void(ParticleSet<2>&)> edit) {
+  setup::edit_start_fields<2>(step_count_, agents_, edit);
+  peak_ = {};
+  start();
 }
 
 Pipeline CrowdSph::build_pipeline() {

@@ -25,6 +25,7 @@
 #include "passes/pressure_solve.hpp"
 #include "passes/wall_state.hpp"
 #include "simulation_setup.hpp"
+#include "start_edit.hpp"
 #include "state_check.hpp"
 #include "tide/core/log.hpp"
 #include "tide/core/parallel.hpp"
@@ -141,13 +142,24 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
   time_ = scene.time.start;
 
   if (!moving_walls_.empty()) moving_walls_.move_to(0, step_count_, time_);  // their velocity at the start
-  std::vector<Stage> start{neighbor_search_stage()};
-  for (Stage& stage : density_stages()) start.push_back(std::move(stage));
-  for (Stage& stage : force_stages()) start.push_back(std::move(stage));
-  StepContext at_start;
-  Pipeline(std::move(start)).run(at_start);
-  check_state();
+  start();
   pipeline_ = build_pipeline();
+}
+
+template <int D>
+void IncompressibleSph<D>::edit_start(FunctionRef<void(ParticleSet<D>&)> edit) {
+  setup::edit_start_fields<D>(step_count_, fluid_, edit);
+  start();
+}
+
+template <int D>
+void IncompressibleSph<D>::start() {
+  std::vector<Stage> stages{neighbor_search_stage()};
+  for (Stage& stage : density_stages()) stages.push_back(std::move(stage));
+  for (Stage& stage : force_stages()) stages.push_back(std::move(stage));
+  StepContext at_start;
+  Pipeline(std::move(stages)).run(at_start);
+  check_state();
 }
 
 template <int D>

@@ -23,6 +23,7 @@
 #include "passes/surface_tension.hpp"
 #include "passes/wall_state.hpp"
 #include "simulation_setup.hpp"
+#include "start_edit.hpp"
 #include "state_check.hpp"
 #include "surface_tension_setup.hpp"
 #include "tide/core/parallel.hpp"
@@ -76,12 +77,23 @@ Wcsph<D>::Wcsph(const scene::Scene& scene)
 
   if (!moving_walls_.empty()) moving_walls_.move_to(0, step_count_, time_);  // their velocity at the start
   if (!bodies_.empty()) bodies_.place(step_count_, time_);
-  std::vector<Stage> start{neighbor_search_stage()};
-  for (Stage& stage : force_stages()) start.push_back(std::move(stage));
-  StepContext at_start;  // dt = 0: the forces at the start time
-  Pipeline(std::move(start)).run(at_start);
-  check_state();
+  start();
   pipeline_ = build_pipeline();
+}
+
+template <int D>
+void Wcsph<D>::edit_start(FunctionRef<void(ParticleSet<D>&)> edit) {
+  setup::edit_start_fields<D>(step_count_, fluid_, edit);
+  start();
+}
+
+template <int D>
+void Wcsph<D>::start() {
+  std::vector<Stage> stages{neighbor_search_stage()};
+  for (Stage& stage : force_stages()) stages.push_back(std::move(stage));
+  StepContext at_start;  // dt = 0: the forces at the start time
+  Pipeline(std::move(stages)).run(at_start);
+  check_state();
 }
 
 template <int D>

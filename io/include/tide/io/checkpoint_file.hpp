@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "tide/core/state_archive.hpp"
 
@@ -31,6 +32,8 @@ CheckpointIdentity checkpoint_identity(const std::filesystem::path& scene_file, 
 /// 64-bit FNV-1a of the file's bytes, as 16 hex digits; std::runtime_error naming the file when it
 /// cannot be read.
 std::string scene_file_hash(const std::filesystem::path& scene_file);
+/// The same hash of a scene given as text (a scene built from a Python dict).
+std::string scene_text_hash(std::string_view text);
 
 /// A checkpoint that is readable but was written for another scene, precision, dimension or
 /// format version: the message names the file, what differs, and both values.

@@ -55,6 +55,7 @@ class CrowdSph final : public Simulation<2> {
   const Pipeline& pipeline() const override { return pipeline_; }
   void save(StateArchive& archive) const override;
   void restore(const StateArchive& archive) override;
+  void edit_start(FunctionRef<void(ParticleSet<2>&)> edit) override;
   double bytes_per_particle() const override;
   std::optional<CrowdStatus> crowd_status() const override;
 
@@ -67,6 +68,8 @@ class CrowdSph final : public Simulation<2> {
   const CrowdPeak& peak() const { return peak_; }
 
  private:
+  /// The neighbour search and what the first step reads from the start state (construction, edit_start).
+  void start();
   Pipeline build_pipeline();
   /// Returns the agents the search removed: those that left the domain elsewhere than through an exit.
   std::size_t search_and_sum_density();

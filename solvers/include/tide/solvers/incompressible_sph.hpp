@@ -74,10 +74,13 @@ class IncompressibleSph final : public Simulation<D> {
   double bytes_per_particle() const override;
   void save(StateArchive& archive) const override;
   void restore(const StateArchive& archive) override;
+  void edit_start(FunctionRef<void(ParticleSet<D>&)> edit) override;
   /// The phases of a multiphase scene; null for a single fluid.
   const Phases* phases() const { return phases_ ? &*phases_ : nullptr; }
 
  private:
+  /// The neighbour search and what the first step reads from the start state (construction, edit_start).
+  void start();
   enum class Target { density, divergence };
 
   /// The stages of a step, in order, for what the scene uses.

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "tide/core/function_ref.hpp"
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
@@ -67,6 +68,14 @@ class Simulation {
   virtual bool set_gravity(const Vector<D>& /*gravity*/) { return false; }
   /// Replaces the fluid's kinematic viscosity, m²/s: only for laminar viscosity with one fluid.
   virtual bool set_kinematic_viscosity(Real /*viscosity*/) { return false; }
+
+  /// Sets the starting state before the first step: `edit` changes the values of the fluid's
+  /// fields (not their number), then the scheme starts again from them as its construction does
+  /// from the scene's lattice: neighbour search (which may re-sort the particles), densities,
+  /// pressures and accelerations at the start time, the state check. std::logic_error once a step
+  /// has been taken or when `edit` changes the particle count; InstabilityError for a state out of
+  /// bounds.
+  virtual void edit_start(FunctionRef<void(ParticleSet<D>&)> edit) = 0;
 
   /// Puts everything the next step reads into `archive` (a checkpoint, docs/output.md).
   virtual void save(StateArchive& archive) const = 0;

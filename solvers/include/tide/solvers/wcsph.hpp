@@ -79,8 +79,11 @@ class Wcsph final : public Simulation<D> {
   const RigidBodies<D>* bodies() const override { return &bodies_; }
   void save(StateArchive& archive) const override;
   void restore(const StateArchive& archive) override;
+  void edit_start(FunctionRef<void(ParticleSet<D>&)> edit) override;
 
  private:
+  /// The neighbour search and what the first step reads from the start state (construction, edit_start).
+  void start();
   void set_hydrostatic_density();
   /// How interactions_ lists the pairs after an update: by the density pass where it can.
   typename Interactions<D>::Listing listing() const;
