@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -221,6 +222,52 @@ TEST(ValidationCases, SettlingCylinderMeetsFaxensDrag) {
   EXPECT_LT(metric(r, "speed_error"), 0.10);
   EXPECT_LT(metric(r, "reynolds_number"), 0.1) << "Stokes flow";
   EXPECT_LT(metric(r, "sideways_over_spacing"), 0.1) << "it falls straight";
+}
+
+// The crowd cases of issue 36 (docs/crowds.md, "What is measured"), with the crowd scheme.
+RunRecord run_crowd_case(const std::string& name) {
+  return run_at_test_resolution(name, {std::string(crowd_scheme), KernelType::wendland_c2});
+}
+
+// Case (c): one agent crosses an empty room to the door, from off the door's axis.
+TEST(CrowdWalk, SingleAgentWalksToTheDoorAtItsDesiredSpeed) {
+  const RunRecord r = run_crowd_case("crowd_single_agent");
+  // Measured: 0.65%, the start-up deficit e^-5 = 0.67% that relaxation leaves at 5τ (the issue's
+  // bound, 2%).
+  EXPECT_LT(metric(r, "open_room_speed_error"), 0.02);
+  // Measured: 0.37% over the whole walk, the door's slowdown included (the issue's 2%).
+  EXPECT_LT(metric(r, "exit_time_error"), 0.02);
+  // Measured: the path is 0.15% longer than the straight line from start to exit: the navigation
+  // field leads straight to the door (bound: half the 2%).
+  EXPECT_LT(metric(r, "path_excess"), 0.01);
+}
+
+// Case (a): the fundamental diagram's shape, each density slower than the one before and than
+// Weidmann's free speed v0 = 1.34 m/s; its distance to Weidmann is printed (the case's metric).
+TEST(CrowdCorridor, MeanSpeedFallsWithDensity) {
+  const RunRecord r = run_crowd_case("crowd_fundamental_diagram");
+  double previous = 1.34;
+  for (const char* density : {"0_5", "1", "1_5", "2", "2_5", "3", "3_4"}) {
+    const double speed = metric(r, std::string("mean_speed_") + density + "_m_per_s");
+    std::printf("density %s persons/m^2: mean speed %.4f m/s, %+.1f%% from Weidmann 1993\n", density, speed,
+                100 * metric(r, std::string("speed_error_") + density));
+    EXPECT_LT(speed, previous) << density;
+    EXPECT_GT(speed, 0) << density;
+    previous = speed;
+  }
+  std::printf("root mean square error against Weidmann 1993: %.1f%%\n", 100 * metric(r, "speed_rms_error"));
+}
+
+// Case (b): flow through a door 1.6, 2.0 and 2.4 m wide. Measured: specific flows 0.920, 1.011,
+// 1.008 persons/(m s), 6% at most from their mean. Bound: 10%, the spread of a constant specific
+// flow (a flow linear in the width through 0) over three widths.
+TEST(CrowdBottleneck, FlowGrowsLinearlyWithTheWidthOfAWideDoor) {
+  const RunRecord r = run_crowd_case("crowd_bottleneck");
+  EXPECT_LT(metric(r, "flow_1_6_per_s"), metric(r, "flow_2_per_s"));
+  EXPECT_LT(metric(r, "flow_2_per_s"), metric(r, "flow_2_4_per_s"));
+  EXPECT_LT(metric(r, "specific_flow_spread"), 0.1);
+  std::printf("specific flows %.3f, %.3f, %.3f persons/(m s)\n", metric(r, "specific_flow_1_6_per_m_s"),
+              metric(r, "specific_flow_2_per_m_s"), metric(r, "specific_flow_2_4_per_m_s"));
 }
 
 }  // namespace
