@@ -64,7 +64,9 @@ TEST(CrowdScene, NegativeAndZeroCountsAreRefused) {
 TEST(CrowdScene, MoreAgentsThanFitTheRegionAreRefused) {
   validation::CrowdRoom room;
   room.agents = R"([{"region": {"min": [1, 1], "max": [3, 3]}, "count": 17}])";  // 4 m²: 16 at 0.5 m
-  EXPECT_EQ(refusal_path(validation::crowd_room_json(room)), "/crowd/agents/0/count");
+  EXPECT_EQ(
+      refusal_path(replaced(validation::crowd_room_json(room), R"("crowd": {)", R"("crowd": {"body_radius": 0.25, )")),
+      "/crowd/agents/0/count");
 }
 
 TEST(CrowdScene, AgentsInsideAWallAreRefused) {
@@ -76,7 +78,7 @@ TEST(CrowdScene, AgentsInsideAWallAreRefused) {
 
 TEST(CrowdScene, AnUnreachableExitIsRefused) {
   validation::CrowdRoom room;
-  room.door = 0.4;  // narrower than a body (2 × 0.25 m): the room is closed to its agents
+  room.door = 0.3;  // narrower than a body (2 × 0.2 m): the room is closed to its agents
   EXPECT_EQ(refusal_path(validation::crowd_room_json(room)), "/crowd/agents/0");
 }
 
@@ -213,11 +215,18 @@ double closest_pair_inside(const AgentStarts& starts, const scene::Box& region, 
   return closest;
 }
 
+// The placement tests below measure their geometry with bodies 0.5 m across (r = 0.25 m, the
+// default before r = 0.2 m): the same code places bodies of any size.
+scene::Scene with_body_radius(scene::Scene scene, double radius) {
+  scene.crowd->body_radius = radius;
+  return scene;
+}
+
 // 272 agents in the 20 m × 3.4 m band of a corridor, 3.4 persons/m² of it: more than a square
 // lattice holds a body diameter apart (0.486 m), so a hexagonal one, 0.506 m apart, every
 // agent inside the region and no two closer than a body diameter, across the periodic x too.
 TEST(AgentPlacement, TooDenseForASquareLatticeStandsOnAHexagonalOne) {
-  const scene::Scene corridor = validation::crowd_corridor(272, 20, 4, 1);
+  const scene::Scene corridor = with_body_radius(validation::crowd_corridor(272, 20, 4, 1), 0.25);
   const AgentStarts starts = place_agents(corridor);
   ASSERT_EQ(starts.positions.size(), 272U);
   // Measured: 0.50633 m, the spacing; bound: a body diameter.
@@ -228,7 +237,7 @@ TEST(AgentPlacement, TooDenseForASquareLatticeStandsOnAHexagonalOne) {
 // inside the region, no two closer than a body diameter across the periodic x, the same places
 // from the same seed and other places from another, and spread evenly along the corridor.
 TEST(AgentPlacement, RandomPlacementKeepsBodiesApartAndFollowsItsSeed) {
-  scene::Scene corridor = validation::crowd_corridor(160, 20, 4, 1, "random");
+  scene::Scene corridor = with_body_radius(validation::crowd_corridor(160, 20, 4, 1, "random"), 0.25);
   const AgentStarts starts = place_agents(corridor);
   ASSERT_EQ(starts.positions.size(), 160U);
   EXPECT_GE(closest_pair_inside(starts, corridor.crowd->agents[0].region, 20), 0.5);
@@ -245,7 +254,7 @@ TEST(AgentPlacement, RandomPlacementKeepsBodiesApartAndFollowsItsSeed) {
 // Two groups in the same band, one on the lattice and one at random, then another at random:
 // every agent a body diameter or more from every other, whichever group it belongs to.
 TEST(AgentPlacement, GroupsPlacedAtRandomKeepClearOfTheGroupsBeforeThem) {
-  scene::Scene corridor = validation::crowd_corridor(40, 20, 4, 1, "lattice");
+  scene::Scene corridor = with_body_radius(validation::crowd_corridor(40, 20, 4, 1, "lattice"), 0.25);
   scene::AgentGroup second = corridor.crowd->agents[0];
   second.placement = scene::AgentPlacement::random;
   second.heading = scene::Vec{-1, 0, 0};
@@ -259,7 +268,7 @@ TEST(AgentPlacement, GroupsPlacedAtRandomKeepClearOfTheGroupsBeforeThem) {
 // 200 agents in that band, 2.9 persons/m² of it, past where random sequential addition jams:
 // refused at the group's count, naming the lattice that holds them.
 TEST(AgentPlacement, RandomPlacementTooDenseIsRefusedAtTheCount) {
-  const scene::Scene corridor = validation::crowd_corridor(200, 20, 4, 1, "random");
+  const scene::Scene corridor = with_body_radius(validation::crowd_corridor(200, 20, 4, 1, "random"), 0.25);
   try {
     place_agents(corridor);
     FAIL() << "200 agents placed at random";
