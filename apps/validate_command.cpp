@@ -134,14 +134,17 @@ std::vector<StudyRun> run_study(const Plan& plan, const std::vector<int>& resolu
   for (const Case& study_case : plan.cases) {
     const auto schemes = std::count_if(plan.schemes.begin(), plan.schemes.end(),
                                        [&](const std::string& scheme) { return study_case.runs_scheme(scheme); });
+    const auto kernels = std::count_if(plan.kernels.begin(), plan.kernels.end(),
+                                       [&](KernelType kernel) { return study_case.runs_kernel(kernel); });
     total += (resolutions.empty() ? study_case.resolutions.size() : resolutions.size()) *
-             static_cast<std::size_t>(schemes) * plan.kernels.size();
+             static_cast<std::size_t>(schemes) * static_cast<std::size_t>(kernels);
   }
   std::vector<StudyRun> runs;
   for (const Case& study_case : plan.cases) {
     for (const std::string& scheme : plan.schemes) {
       if (!study_case.runs_scheme(scheme)) continue;
       for (const KernelType kernel : plan.kernels) {
+        if (!study_case.runs_kernel(kernel)) continue;
         for (const int resolution : resolutions.empty() ? study_case.resolutions : resolutions) {
           std::printf("[%zu/%zu] %s %s/%s resolution %d: ", runs.size() + 1, total, study_case.name.c_str(),
                       scheme.c_str(), std::string(kernel_name(kernel)).c_str(), resolution);

@@ -81,7 +81,7 @@ std::span<const Key<scene::Crowd>> crowd_keys() {
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
          crowd.time_gap = values.number(value, positive);
        }},
-      {"agent_length", "number > 0", "m", "`0.5`",
+      {"agent_length", "number > 0", "m", "`0.4`",
        "ℓ: the headway at which an agent stops; the model's agent length is a body's diameter, 2 `body_radius` "
        "(Tordeux, Chraibi & Seyfried 2016).",
        Presence::optional,
@@ -106,8 +106,10 @@ std::span<const Key<scene::Crowd>> crowd_keys() {
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
          crowd.agent_mass = values.number(value, positive);
        }},
-      {"body_radius", "number > 0", "m", "`0.25`",
-       "r: half a body's width (Helbing, Farkas & Vicsek 2000 draw it from 0.25–0.35 m).", Presence::optional,
+      {"body_radius", "number > 0", "m", "`0.2`",
+       "r: half a body's width (the default of JuPedSim's collision-free speed model; Helbing, Farkas & Vicsek "
+       "2000 draw it from 0.25–0.35 m; [crowds.md](crowds.md#parameters)).",
+       Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
          crowd.body_radius = values.number(value, positive);
        }},

@@ -12,13 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "crowd_scenes.hpp"
 #include "inflow_scenes.hpp"
 #include "multiphase_scenes.hpp"
 #include "small_scenes.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/io/checkpoint_file.hpp"
 #include "tide/solvers/simulation.hpp"
+#include "tide/validation/crowd_scenes.hpp"
 
 namespace tide {
 namespace {
@@ -160,12 +160,12 @@ scene::Scene with_body() {
 
 // 220 agents, 20 of them by the door, some out through it within the 400 steps (2 s).
 scene::Scene crowd() {
-  test::CrowdRoom room;
+  validation::CrowdRoom room;
   room.length = 30;
   room.width = 20;
   room.agents = R"([{"region": {"min": [1, 1], "max": [10, 19]}, "count": 200},
                     {"region": {"min": [27, 8], "max": [29.5, 12]}, "count": 20}])";
-  return test::crowd_room(room);
+  return validation::crowd_room(room);
 }
 
 using scene::DensityMethod;

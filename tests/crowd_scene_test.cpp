@@ -12,13 +12,13 @@
 #include <string_view>
 #include <vector>
 
-#include "crowd_scenes.hpp"
 #include "tide/core/log.hpp"
 #include "tide/core/scene_error.hpp"
 #include "tide/solvers/agent_placement.hpp"
 #include "tide/solvers/crowd_sph.hpp"
 #include "tide/solvers/navigation_field.hpp"
 #include "tide/solvers/simulation.hpp"
+#include "tide/validation/crowd_scenes.hpp"
 
 namespace tide {
 namespace {
@@ -44,10 +44,10 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   return at == std::string::npos ? text : text.replace(at, from.size(), to);
 }
 
-TEST(CrowdScene, TheTestRoomIsAccepted) { EXPECT_EQ(refusal_path(test::crowd_room_json({})), "(accepted)"); }
+TEST(CrowdScene, TheTestRoomIsAccepted) { EXPECT_EQ(refusal_path(validation::crowd_room_json({})), "(accepted)"); }
 
 TEST(CrowdScene, NoExitIsRefused) {
-  const std::string json = test::crowd_room_json({});
+  const std::string json = validation::crowd_room_json({});
   const std::size_t from = json.find(R"("exits": [)") + 10;
   const std::size_t to = json.find(R"(, "desired_speed")") - 1;
   EXPECT_EQ(refusal_path(std::string(json).replace(from, to - from, "")), "/crowd/exits");
@@ -55,39 +55,42 @@ TEST(CrowdScene, NoExitIsRefused) {
 
 TEST(CrowdScene, NegativeAndZeroCountsAreRefused) {
   for (const char* count : {"-3", "0", "2.5"}) {
-    test::CrowdRoom room;
+    validation::CrowdRoom room;
     room.agents = std::string(R"([{"region": {"min": [1, 1], "max": [5, 5]}, "count": )") + count + "}]";
-    EXPECT_EQ(refusal_path(test::crowd_room_json(room)), "/crowd/agents/0/count") << count;
+    EXPECT_EQ(refusal_path(validation::crowd_room_json(room)), "/crowd/agents/0/count") << count;
   }
 }
 
 TEST(CrowdScene, MoreAgentsThanFitTheRegionAreRefused) {
-  test::CrowdRoom room;
+  validation::CrowdRoom room;
   room.agents = R"([{"region": {"min": [1, 1], "max": [3, 3]}, "count": 17}])";  // 4 m²: 16 at 0.5 m
-  EXPECT_EQ(refusal_path(test::crowd_room_json(room)), "/crowd/agents/0/count");
+  EXPECT_EQ(
+      refusal_path(replaced(validation::crowd_room_json(room), R"("crowd": {)", R"("crowd": {"body_radius": 0.25, )")),
+      "/crowd/agents/0/count");
 }
 
 TEST(CrowdScene, AgentsInsideAWallAreRefused) {
-  test::CrowdRoom room;
+  validation::CrowdRoom room;
   room.agents = R"([{"region": {"min": [1, 1], "max": [5, 5]}, "count": 4},
                     {"region": {"min": [-0.2, 1], "max": [0.6, 3]}, "count": 2}])";  // the first at x = 0.2
-  EXPECT_EQ(refusal_path(test::crowd_room_json(room)), "/crowd/agents/1");
+  EXPECT_EQ(refusal_path(validation::crowd_room_json(room)), "/crowd/agents/1");
 }
 
 TEST(CrowdScene, AnUnreachableExitIsRefused) {
-  test::CrowdRoom room;
-  room.door = 0.4;  // narrower than a body (2 × 0.25 m): the room is closed to its agents
-  EXPECT_EQ(refusal_path(test::crowd_room_json(room)), "/crowd/agents/0");
+  validation::CrowdRoom room;
+  room.door = 0.3;  // narrower than a body (2 × 0.2 m): the room is closed to its agents
+  EXPECT_EQ(refusal_path(validation::crowd_room_json(room)), "/crowd/agents/0");
 }
 
 TEST(CrowdScene, AnExitInsideAWallIsRefused) {
-  const std::string json = replaced(test::crowd_room_json({}), R"("region": {"min": [12.3, 1.4], "max": [13.8, 4.6]})",
-                                    R"("region": {"min": [-0.3, 2], "max": [0, 3]})");
+  const std::string json =
+      replaced(validation::crowd_room_json({}), R"("region": {"min": [12.3, 1.4], "max": [13.8, 4.6]})",
+               R"("region": {"min": [-0.3, 2], "max": [0, 3]})");
   EXPECT_EQ(refusal_path(json), "/crowd/exits/0");
 }
 
 TEST(CrowdScene, FluidKeysAndOtherSchemesAreRefused) {
-  const std::string json = test::crowd_room_json({});
+  const std::string json = validation::crowd_room_json({});
   EXPECT_EQ(
       refusal_path(replaced(json, R"("crowd": {)", R"("materials": [{"name": "water", "max_speed": 1}], "crowd": {)")),
       "/materials");
@@ -96,7 +99,7 @@ TEST(CrowdScene, FluidKeysAndOtherSchemesAreRefused) {
 
 // A corridor's walkers follow a heading and need no exit; a group without one does.
 TEST(CrowdScene, ExitsMayBeLeftOutOnlyWhenEveryGroupHasAHeading) {
-  const std::string json = test::crowd_room_json({});
+  const std::string json = validation::crowd_room_json({});
   const std::size_t from = json.find(R"(, "exits": [)");
   const std::size_t to = json.find(R"(, "desired_speed")");
   const std::string no_exits = std::string(json).replace(from, to - from, "");
@@ -118,9 +121,9 @@ TEST(CrowdScene, ThreeDimensionsAreRefused) {
 // density passes 5 persons/m² at the start, where the crowd stands, and is flagged once (the
 // crowd then spreads out).
 TEST(CrowdPeak, ADensityAboveFiveIsFlaggedOnceWithWhereAndWhen) {
-  test::CrowdRoom room;
+  validation::CrowdRoom room;
   room.agents = R"([{"region": {"min": [2, 2], "max": [4.4, 4.4]}, "count": 36}])";
-  std::string json = test::crowd_room_json(room);
+  std::string json = validation::crowd_room_json(room);
   json = replaced(json, R"("crowd": {)", R"("crowd": {"body_radius": 0.2, )");
   std::vector<std::string> warnings;
   const LogSink previous = set_log_sink([&](LogLevel level, std::string_view message) {
@@ -212,11 +215,18 @@ double closest_pair_inside(const AgentStarts& starts, const scene::Box& region, 
   return closest;
 }
 
+// The placement tests below measure their geometry with bodies 0.5 m across (r = 0.25 m, the
+// default before r = 0.2 m): the same code places bodies of any size.
+scene::Scene with_body_radius(scene::Scene scene, double radius) {
+  scene.crowd->body_radius = radius;
+  return scene;
+}
+
 // 272 agents in the 20 m × 3.4 m band of a corridor, 3.4 persons/m² of it: more than a square
 // lattice holds a body diameter apart (0.486 m), so a hexagonal one, 0.506 m apart, every
 // agent inside the region and no two closer than a body diameter, across the periodic x too.
 TEST(AgentPlacement, TooDenseForASquareLatticeStandsOnAHexagonalOne) {
-  const scene::Scene corridor = test::crowd_corridor(272, 20, 4, 1);
+  const scene::Scene corridor = with_body_radius(validation::crowd_corridor(272, 20, 4, 1), 0.25);
   const AgentStarts starts = place_agents(corridor);
   ASSERT_EQ(starts.positions.size(), 272U);
   // Measured: 0.50633 m, the spacing; bound: a body diameter.
@@ -227,7 +237,7 @@ TEST(AgentPlacement, TooDenseForASquareLatticeStandsOnAHexagonalOne) {
 // inside the region, no two closer than a body diameter across the periodic x, the same places
 // from the same seed and other places from another, and spread evenly along the corridor.
 TEST(AgentPlacement, RandomPlacementKeepsBodiesApartAndFollowsItsSeed) {
-  scene::Scene corridor = test::crowd_corridor(160, 20, 4, 1, "random");
+  scene::Scene corridor = with_body_radius(validation::crowd_corridor(160, 20, 4, 1, "random"), 0.25);
   const AgentStarts starts = place_agents(corridor);
   ASSERT_EQ(starts.positions.size(), 160U);
   EXPECT_GE(closest_pair_inside(starts, corridor.crowd->agents[0].region, 20), 0.5);
@@ -244,7 +254,7 @@ TEST(AgentPlacement, RandomPlacementKeepsBodiesApartAndFollowsItsSeed) {
 // Two groups in the same band, one on the lattice and one at random, then another at random:
 // every agent a body diameter or more from every other, whichever group it belongs to.
 TEST(AgentPlacement, GroupsPlacedAtRandomKeepClearOfTheGroupsBeforeThem) {
-  scene::Scene corridor = test::crowd_corridor(40, 20, 4, 1, "lattice");
+  scene::Scene corridor = with_body_radius(validation::crowd_corridor(40, 20, 4, 1, "lattice"), 0.25);
   scene::AgentGroup second = corridor.crowd->agents[0];
   second.placement = scene::AgentPlacement::random;
   second.heading = scene::Vec{-1, 0, 0};
@@ -258,7 +268,7 @@ TEST(AgentPlacement, GroupsPlacedAtRandomKeepClearOfTheGroupsBeforeThem) {
 // 200 agents in that band, 2.9 persons/m² of it, past where random sequential addition jams:
 // refused at the group's count, naming the lattice that holds them.
 TEST(AgentPlacement, RandomPlacementTooDenseIsRefusedAtTheCount) {
-  const scene::Scene corridor = test::crowd_corridor(200, 20, 4, 1, "random");
+  const scene::Scene corridor = with_body_radius(validation::crowd_corridor(200, 20, 4, 1, "random"), 0.25);
   try {
     place_agents(corridor);
     FAIL() << "200 agents placed at random";

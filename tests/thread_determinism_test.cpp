@@ -7,7 +7,6 @@
 #include <random>
 #include <vector>
 
-#include "crowd_scenes.hpp"
 #include "inflow_scenes.hpp"
 #include "multiphase_scenes.hpp"
 #include "small_scenes.hpp"
@@ -18,6 +17,7 @@
 #include "tide/solvers/probes.hpp"
 #include "tide/solvers/simulation.hpp"
 #include "tide/solvers/wcsph.hpp"
+#include "tide/validation/crowd_scenes.hpp"
 
 namespace tide {
 namespace {
@@ -268,14 +268,14 @@ TEST(ThreadDeterminism, InflowChannelIsBitwiseIdentical) {
 // (2 s): the density and force passes, the navigation field and the removal of leavers, with
 // the counts and the peak density.
 TEST(ThreadDeterminism, CrowdEvacuationIsBitwiseIdentical) {
-  test::CrowdRoom room;
+  validation::CrowdRoom room;
   room.length = 30;
   room.width = 20;
   room.agents = R"([{"region": {"min": [1, 1], "max": [25, 19]}, "count": 1000},
                     {"region": {"min": [27, 8], "max": [29.5, 12]}, "count": 20}])";
   const auto state = [&](int threads) {
     const ThreadLimit limit(threads);
-    CrowdSph crowd(test::crowd_room(room));
+    CrowdSph crowd(validation::crowd_room(room));
     std::vector<Real> values = state_after_steps(crowd, 400);
     values.push_back(static_cast<Real>(crowd.exited()[0]));
     const CrowdPeak& peak = crowd.peak();

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -221,6 +222,61 @@ TEST(ValidationCases, SettlingCylinderMeetsFaxensDrag) {
   EXPECT_LT(metric(r, "speed_error"), 0.10);
   EXPECT_LT(metric(r, "reynolds_number"), 0.1) << "Stokes flow";
   EXPECT_LT(metric(r, "sideways_over_spacing"), 0.1) << "it falls straight";
+}
+
+// The crowd cases of issue 36 (docs/crowds.md, "What is measured"), with the crowd scheme.
+RunRecord run_crowd_case(const std::string& name) {
+  return run_at_test_resolution(name, {std::string(crowd_scheme), KernelType::wendland_c2});
+}
+
+// Case (c): one agent crosses an empty room to the door, from off the door's axis.
+TEST(CrowdWalk, SingleAgentWalksToTheDoorAtItsDesiredSpeed) {
+  const RunRecord r = run_crowd_case("crowd_single_agent");
+  // Measured: 0.65%, the start-up deficit e^-5 = 0.67% that relaxation leaves at 5τ (the issue's
+  // bound, 2%).
+  EXPECT_LT(metric(r, "open_room_speed_error"), 0.02);
+  // Measured: 0.26% over the whole walk, the door's slowdown included (the issue's 2%).
+  EXPECT_LT(metric(r, "exit_time_error"), 0.02);
+  // Measured: the path is 0.06% longer than the straight line from start to exit: the navigation
+  // field leads straight to the door (bound: half the 2%).
+  EXPECT_LT(metric(r, "path_excess"), 0.01);
+}
+
+// Case (a): the fundamental diagram's shape in a corridor 10 m long, each density up to 4
+// persons/m² slower than the one before and than Weidmann's free speed v0 = 1.34 m/s; at 4.5 and
+// 5 the crowd is jammed (measured −0.0000 and 0.055 m/s, from a lattice start) and must be
+// slower than at 4 and not walk backwards. Its distance to Weidmann (the case's metric, 39% RMS
+// at this length, 28% at the study's 20 m) is printed. Measured, 0.5 to 4: 1.024, 0.773, 0.566,
+// 0.434, 0.432, 0.340, 0.228, 0.123 m/s.
+TEST(CrowdCorridor, MeanSpeedFallsWithDensity) {
+  const RunRecord r = run_crowd_case("crowd_fundamental_diagram");
+  double previous = 1.34, at_four = 0;
+  for (const char* density : {"0_5", "1", "1_5", "2", "2_5", "3", "3_5", "4", "4_5", "5"}) {
+    const double speed = metric(r, std::string("mean_speed_") + density + "_m_per_s");
+    std::printf("density %s persons/m^2: mean speed %.4f m/s, %+.1f%% from Weidmann 1993\n", density, speed,
+                100 * metric(r, std::string("speed_error_") + density));
+    if (at_four > 0) {
+      EXPECT_LT(speed, at_four) << density;
+      EXPECT_GT(speed, -0.01) << density;
+      continue;
+    }
+    EXPECT_LT(speed, previous) << density;
+    previous = speed;
+    if (std::string(density) == "4") at_four = speed;
+  }
+  std::printf("root mean square error against Weidmann 1993: %.1f%%\n", 100 * metric(r, "speed_rms_error"));
+}
+
+// Case (b): flow through a door 1.6, 2.0 and 2.4 m wide. Measured: specific flows 1.319, 1.314,
+// 1.329 persons/(m s), 0.6% at most from their mean. Bound: 10%, the spread of a constant specific
+// flow (a flow linear in the width through 0) over three widths.
+TEST(CrowdBottleneck, FlowGrowsLinearlyWithTheWidthOfAWideDoor) {
+  const RunRecord r = run_crowd_case("crowd_bottleneck");
+  EXPECT_LT(metric(r, "flow_1_6_per_s"), metric(r, "flow_2_per_s"));
+  EXPECT_LT(metric(r, "flow_2_per_s"), metric(r, "flow_2_4_per_s"));
+  EXPECT_LT(metric(r, "specific_flow_spread"), 0.1);
+  std::printf("specific flows %.3f, %.3f, %.3f persons/(m s)\n", metric(r, "specific_flow_1_6_per_m_s"),
+              metric(r, "specific_flow_2_per_m_s"), metric(r, "specific_flow_2_4_per_m_s"));
 }
 
 }  // namespace

@@ -21,7 +21,11 @@ const std::vector<Case>& cases() {
                                      floating_box_case(3),
                                      neutral_body_case(false),
                                      neutral_body_case(true),
-                                     settling_cylinder_case()};
+                                     settling_cylinder_case(),
+                                     crowd_fundamental_diagram_case(),
+                                     crowd_bottleneck_case(),
+                                     crowd_single_agent_case(),
+                                     crowd_lanes_case()};
   return all;
 }
 
@@ -32,7 +36,7 @@ const Case* find_case(std::string_view name) {
 }
 
 const std::vector<std::string>& scheme_names() {
-  static const std::vector<std::string> names{"wcsph", "wcsph_continuity", "dfsph", "iisph"};
+  static const std::vector<std::string> names{"wcsph", "wcsph_continuity", "dfsph", "iisph", std::string(crowd_scheme)};
   return names;
 }
 

@@ -133,6 +133,8 @@ void write_case(std::ostream& out, const Case& study_case, std::span<const Study
   const std::vector<StudyRun> runs = detail::runs_of_case(all_runs, study_case.name);
   out << "\n## " << study_case.title << "\n\n"
       << "Case `" << study_case.name << "`. Reference: " << study_case.reference << "\n\n"
+      << "Reproduce this case alone: `tide validate " << study_case.name << " --out validation-results/"
+      << study_case.name << "`.\n\n"
       << "Resolution: " << study_case.resolution_meaning << " (default ladder";
   for (std::size_t k = 0; k < study_case.resolutions.size(); ++k) {
     out << (k > 0 ? ", " : " ") << study_case.resolutions[k];
@@ -156,6 +158,9 @@ void write_case(std::ostream& out, const Case& study_case, std::span<const Study
   const std::string image = image_directory + "/" + study_case.name;
   out << "\n![" << study_case.title << ": primary error against wall time](" << image << ".png)\n"
       << "\n![" << study_case.title << ": primary error against resolution](" << image << "_resolution.png)\n";
+  for (const Figure& figure : study_case.figures) {
+    out << "\n![" << figure.caption << "](" << image_directory << '/' << figure.file << ")\n";
+  }
 }
 
 }  // namespace

@@ -80,12 +80,7 @@ std::string plot_script(const fs::path& output, const Case& study_case, const st
   const std::string& metric = series.front().records.front().metrics.front().name;
   std::ostringstream script;
   script.precision(17);
-  script << "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
-         << "  set terminal pngcairo size 960,640 noenhanced\n"
-         << "} else {\n"
-         << "  set terminal png size 960,640 noenhanced\n"
-         << "}\n"
-         << "set output " << gnuplot_string(output.string()) << '\n'
+  script << png_terminal(output.string())
          << "set logscale xy\nset grid\nset key top right\nset format x '%g'\nset format y '%g'\n"
          << "set ylabel " << gnuplot_string(metric_axis_label(metric)) << '\n';
   if (abscissa == Abscissa::wall_seconds) {
@@ -161,6 +156,16 @@ fs::path draw(const fs::path& png, const Case& study_case, const std::vector<Ser
 
 }  // namespace
 
+std::string png_terminal(const std::string& output) {
+  return "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+         "  set terminal pngcairo size 960,640 noenhanced\n"
+         "} else {\n"
+         "  set terminal png size 960,640 noenhanced\n"
+         "}\n"
+         "set output " +
+         gnuplot_string(output) + '\n';
+}
+
 std::string gnuplot_string(std::string_view text) {
   std::string result = "'";
   for (const char c : text) {
@@ -205,8 +210,19 @@ std::vector<fs::path> write_plots(const fs::path& directory, const Case& study_c
   const std::vector<Series> series = plot_series(detail::runs_of_case(runs, study_case.name));
   if (series.empty()) return {};
   fs::create_directories(directory);
-  return {draw(directory / (study_case.name + ".png"), study_case, series, Abscissa::wall_seconds),
-          draw(directory / (study_case.name + "_resolution.png"), study_case, series, Abscissa::resolution)};
+  std::vector<fs::path> written{
+      draw(directory / (study_case.name + ".png"), study_case, series, Abscissa::wall_seconds),
+      draw(directory / (study_case.name + "_resolution.png"), study_case, series, Abscissa::resolution)};
+  std::vector<RunRecord> records;
+  for (const StudyRun& run : detail::runs_of_case(runs, study_case.name)) {
+    if (run.ok()) records.push_back(run.record);
+  }
+  for (const Figure& figure : study_case.figures) {
+    const fs::path png = directory / figure.file;
+    draw_png(png, [&](const fs::path& output) { return figure.script(output.string(), records); });
+    written.push_back(png);
+  }
+  return written;
 }
 
 }  // namespace tide::validation

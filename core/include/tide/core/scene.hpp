@@ -290,11 +290,11 @@ struct Crowd {
   double stiffness = 1;              // K, m⁴/s²: uneasiness p = K max(ρ − ρ_c, 0)
   double relaxation_time = 0.5;      // s, τ
   double time_gap = 1;               // s, T of the speed from the space ahead (Tordeux et al. 2016)
-  double agent_length = 0.5;         // m, ℓ: the headway at which an agent stops, a body's diameter
+  double agent_length = 0.4;         // m, ℓ: the headway at which an agent stops, a body's diameter
   double steering_strength = 8;      // a: how far the agents close by turn one's walking direction
   double steering_range = 0.1;       // m, D: the range of that turning (Tordeux et al. 2016, eq. 5)
   double agent_mass = 80;            // kg, m
-  double body_radius = 0.25;         // m, r
+  double body_radius = 0.2;          // m, r (JuPedSim's collision-free speed model; docs/crowds.md)
   double repulsion_strength = 2000;  // N, A
   double repulsion_range = 0.08;     // m, B
   double body_stiffness = 1.2e5;     // kg/s², k

@@ -62,6 +62,8 @@ class CrowdSph final : public Simulation<2> {
   const NavigationField& navigation() const { return navigation_; }
   /// Each agent's desired speed, m/s (reordered with the agents).
   ScalarField desired_speed() const { return desired_speed_; }
+  /// Each agent's fixed heading where some group has one (zero for the others; reordered with the agents).
+  const std::optional<VectorField>& heading() const { return heading_; }
   /// Agents that left through each exit so far (crowd.exits order).
   const std::vector<std::size_t>& exited() const { return exited_; }
   /// The largest density since the start, where and when.

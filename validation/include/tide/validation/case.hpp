@@ -15,6 +15,9 @@
 
 namespace tide::validation {
 
+/// The scheme that moves people (docs/crowds.md): its cases name it, and only they run it.
+inline constexpr std::string_view crowd_scheme = "crowd";
+
 /// One error metric of a run (dimensionless unless its name says otherwise).
 struct Metric {
   std::string name;  // snake_case, also the CSV column, e.g. "velocity_l2_error"
@@ -23,7 +26,7 @@ struct Metric {
 
 /// How a case is run: the scheme and the kernel.
 /// Schemes: "wcsph" (summation density), "wcsph_continuity" (continuity density with δ-SPH diffusion, δ = 0.1),
-/// "dfsph" and "iisph" (incompressible, summation density).
+/// "dfsph" and "iisph" (incompressible, summation density), and "crowd" (people, for the crowd cases only).
 struct Variant {
   std::string scheme = "wcsph";
   KernelType kernel = KernelType::wendland_c2;
@@ -44,6 +47,15 @@ struct RunRecord {
   }
 };
 
+/// A figure a case draws from its runs beside the error plots every case has (e.g. the fundamental
+/// diagram against Weidmann's curve): `script` returns the gnuplot script that writes the PNG
+/// `output` from the case's successful runs.
+struct Figure {
+  std::string file;     // e.g. "crowd_fundamental_diagram_speed.png"
+  std::string caption;  // the image's alternative text on the page
+  std::function<std::string(const std::string& output, const std::vector<RunRecord>& runs)> script;
+};
+
 struct Case {
   std::string name;                       // command-line name, e.g. "poiseuille"
   std::string title;                      // e.g. "Poiseuille flow start-up"
@@ -52,9 +64,15 @@ struct Case {
   std::vector<std::string> metric_notes;  // one line per metric: name and definition
   std::vector<int> resolutions;           // the study's default ladder (doubling where the cost allows)
   int test_resolution = 0;                // the low resolution the regression test runs
-  std::vector<std::string> schemes;       // the schemes it applies to (e.g. only those with bodies); empty: all
+  std::vector<std::string> schemes;  // the schemes it applies to (e.g. only those with bodies); empty: the fluid ones
+  std::vector<KernelType> kernels;   // the kernels it applies to; empty: all
+  std::vector<Figure> figures;       // its own figures, beside the error plots
   bool runs_scheme(std::string_view scheme) const {
-    return schemes.empty() || std::find(schemes.begin(), schemes.end(), scheme) != schemes.end();
+    return schemes.empty() ? scheme != crowd_scheme
+                           : std::find(schemes.begin(), schemes.end(), scheme) != schemes.end();
+  }
+  bool runs_kernel(KernelType kernel) const {
+    return kernels.empty() || std::find(kernels.begin(), kernels.end(), kernel) != kernels.end();
   }
   std::function<RunRecord(int resolution, const Variant& variant)> run;
 };
@@ -65,7 +83,7 @@ const std::vector<Case>& cases();
 /// The case called `name`, or nullptr.
 const Case* find_case(std::string_view name);
 
-/// The schemes a Variant may name.
+/// The schemes a Variant may name, the fluid ones then "crowd".
 const std::vector<std::string>& scheme_names();
 
 }  // namespace tide::validation

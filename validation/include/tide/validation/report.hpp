@@ -65,13 +65,18 @@ bool gnuplot_available();
 /// no image.
 void draw_png(const std::filesystem::path& png, const std::function<std::string(const std::filesystem::path&)>& script);
 
+/// The lines of a gnuplot script that send its plot to the PNG `output`, 960×640 (cairo where
+/// gnuplot has it).
+std::string png_terminal(const std::string& output);
+
 /// A gnuplot single-quoted string: only the quote itself is special, written twice.
 std::string gnuplot_string(std::string_view text);
 
 /// The figures of one case, drawn by gnuplot into `directory`: `<case>.png`, the primary error
 /// (metrics[0]) against wall seconds on log–log axes, one line per scheme/kernel with each point
 /// labelled by its resolution, and `<case>_resolution.png`, the same error against resolution.
-/// Returns the files written: none when no successful run of the case has a positive error.
+/// Then the case's own figures (Case::figures). Returns the files written: none when no
+/// successful run of the case has a positive error.
 /// Throws std::runtime_error when gnuplot is missing or fails.
 std::vector<std::filesystem::path> write_plots(const std::filesystem::path& directory, const Case& study_case,
                                                std::span<const StudyRun> runs);

@@ -1,7 +1,8 @@
 #pragma once
 
-// Small crowd scenes for the tests, written as scene files so that the reader is part of what
-// they check: a walled room with one door in its right wall, and the exit region beyond it.
+// Small crowd scenes for the crowd validation cases and the tests, written as scene files so that
+// the reader is part of what they check: a walled room with one door in its right wall, and the
+// exit region beyond it; a corridor periodic along its length.
 
 #include <sstream>
 #include <string>
@@ -9,7 +10,7 @@
 #include "tide/core/scene.hpp"
 #include "tide/io/scene_reader.hpp"
 
-namespace tide::test {
+namespace tide::validation {
 
 struct CrowdRoom {
   double length = 12;  // m, inner x extent
@@ -47,21 +48,45 @@ inline std::string crowd_room_json(const CrowdRoom& room) {
 
 inline scene::Scene crowd_room(const CrowdRoom& room) { return io::parse_scene(crowd_room_json(room), "crowd_room"); }
 
-/// A corridor periodic along x, `length` × `width` inside walls 0.3 m thick below and above,
-/// `count` agents spread over it (a body radius and a half spacing from the walls) walking along +x,
-/// placed as `placement` ("lattice" or "random") says.
-inline scene::Scene crowd_corridor(std::size_t count, double length, double width, double end,
-                                   const std::string& placement = "lattice") {
+/// The scene file text of a corridor periodic along x, `length` × `width` inside walls 0.3 m
+/// thick below and above, with the agent groups `groups` (a JSON array).
+inline std::string crowd_corridor_json(const std::string& groups, double length, double width, double end) {
   std::ostringstream json;
   json << R"({"dimension": 2, "particle_spacing": 0.1, "kernel": {"type": "wendland_c2", "smoothing_ratio": 5},)"
-       << R"("crowd": {"agents": [{"region": {"min": [0, 0.3], "max": [)" << length << ", " << width - 0.3
-       << R"(]}, "count": )" << count << R"(, "heading": [1, 0], "placement": ")" << placement << R"("}]}, )"
+       << R"("crowd": {"agents": )" << groups << "}, "
        << R"("walls": {"obstacles": [{"box": {"min": [0, -0.3], "max": [)" << length << R"(, 0]}}, )"
        << R"({"box": {"min": [0, )" << width << R"(], "max": [)" << length << ", " << width + 0.3 << "]}}]}, "
        << R"("domain": {"min": [0, -0.5], "max": [)" << length << ", " << width + 0.5
        << R"(], "periodic": [true, false]}, "gravity": [0, 0], "solver": {"scheme": "crowd"}, "time": {"end": )" << end
        << "}}";
-  return io::parse_scene(json.str(), "crowd_corridor");
+  return json.str();
 }
 
-}  // namespace tide::test
+/// A group of `count` agents spread over the corridor (a body radius and a half spacing from the
+/// walls) walking along `heading_x` (1 or −1), placed as `placement` ("lattice" or "random") says.
+inline std::string corridor_group_json(std::size_t count, double length, double width, int heading_x,
+                                       const std::string& placement) {
+  std::ostringstream json;
+  json << R"({"region": {"min": [0, 0.3], "max": [)" << length << ", " << width - 0.3 << R"(]}, "count": )" << count
+       << R"(, "heading": [)" << heading_x << R"(, 0], "placement": ")" << placement << R"("})";
+  return json.str();
+}
+
+/// A corridor periodic along x, `length` × `width`, `count` agents walking along +x.
+inline scene::Scene crowd_corridor(std::size_t count, double length, double width, double end,
+                                   const std::string& placement = "lattice") {
+  std::ostringstream groups;
+  groups << '[' << corridor_group_json(count, length, width, 1, placement) << ']';
+  return io::parse_scene(crowd_corridor_json(groups.str(), length, width, end), "crowd_corridor");
+}
+
+/// The same corridor with counter-flow: `count` agents walking along +x and `count` along −x,
+/// all at random over it.
+inline scene::Scene crowd_counterflow(std::size_t count, double length, double width, double end) {
+  std::ostringstream groups;
+  groups << '[' << corridor_group_json(count, length, width, 1, "random") << ", "
+         << corridor_group_json(count, length, width, -1, "random") << ']';
+  return io::parse_scene(crowd_corridor_json(groups.str(), length, width, end), "crowd_counterflow");
+}
+
+}  // namespace tide::validation
