@@ -272,13 +272,10 @@ ParticleSet<D> make_fluid(const scene::Scene& scene, Real mass, Real rest_densit
       rho[i] = phases->table[samples.materials[i]].rest_density;
     }
   }
-  if (scene.solver.shifting != scene::Shifting::none) fields.shift = fluid.add_vector("shift");
-  // The free-surface marker of shifting, and of the free-surface density of continuity WCSPH.
-  const bool holds_surface_density = scene.solver.scheme == scene::Scheme::wcsph &&
-                                     scene.solver.density == scene::DensityMethod::continuity &&
-                                     scene.solver.clamp_negative_pressure;
-  if (scene.solver.shifting != scene::Shifting::none || holds_surface_density)
+  if (scene.solver.shifting != scene::Shifting::none) {
+    fields.shift = fluid.add_vector("shift");
     fields.position_divergence = fluid.add_scalar("position_divergence");
+  }
   return fluid;
 }
 

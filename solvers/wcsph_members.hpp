@@ -324,10 +324,8 @@ bool Wcsph<D>::holds_free_surface_density() const {
 template <int D>
 void Wcsph<D>::hold_free_surface_density() {
   // Lind et al. 2012's free-surface threshold, ∇·r < D − ½, as for particle shifting.
-  passes::position_divergence<D>(kernel_, fluid_, fluid_fields_, interactions_,
-                                 fluid_[fluid_fields_.position_divergence]);
-  passes::hold_free_surface_density(std::as_const(fluid_)[fluid_fields_.position_divergence], Real(D) - Real(0.5),
-                                    eos_.rest_density(), fluid_[fluid_fields_.density]);
+  passes::hold_free_surface_density<D>(kernel_, fluid_, fluid_fields_, interactions_, Real(D) - Real(0.5),
+                                       eos_.rest_density(), interactions_.pass_scratch(fluid_.size()));
 }
 
 template <int D>

@@ -2,11 +2,14 @@
 
 // The density of a free-surface particle under continuity density with clamped pressure.
 
-#include <algorithm>
 #include <span>
+#include <utility>
 
+#include "position_divergence.hpp"
+#include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/parallel.hpp"
-#include "tide/core/types.hpp"
+#include "tide/solvers/interactions.hpp"
+#include "tide/solvers/particle_fields.hpp"
 
 namespace tide::passes {
 
@@ -21,11 +24,25 @@ namespace tide::passes {
 /// (DensitySummationFreeSurface, with the Riemann WCSPH of Zhang, Hu & Adams 2017); here only
 /// at the surface and on the integrated density. Particles in the bulk keep theirs, so a real
 /// rarefaction or blow-up there still meets the stability band.
-inline void hold_free_surface_density(std::span<const Real> divergence, Real surface_divergence, Real surface_density,
-                                      std::span<Real> density) {
-  for_each_particle(density.size(), [&](std::size_t i) {
-    if (divergence[i] < surface_divergence) density[i] = std::max(density[i], surface_density);
-  });
+/// The held densities go through `scratch` (a Real per fluid particle), so that every ∇·r sees
+/// the densities from before the pass. Only a particle below ρ_surface can change, so only those
+/// walk their neighbours for ∇·r: under gravity, those near the surface.
+template <int D>
+void hold_free_surface_density(const RuntimeKernel<D>& kernel, ParticleSet<D>& fluid, const FluidFields<D>& f,
+                               const Interactions<D>& interactions, Real surface_divergence, Real surface_density,
+                               std::span<Real> scratch) {
+  const auto mass = std::as_const(fluid)[f.mass];
+  const auto density = std::as_const(fluid)[f.density];
+  const auto volumes = detail::contact_volumes(interactions);
+  for_each_fluid_particle<D>(interactions, std::as_const(fluid)[f.position], ScalarOutput{scratch},
+                             [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+                               if (density[i] >= surface_density) return density[i];
+                               const Real divergence =
+                                   position_divergence_of<D>(kernel, i, neighbors, mass, density, volumes);
+                               return divergence < surface_divergence ? surface_density : density[i];
+                             });
+  auto held = fluid[f.density];
+  for_each_particle(fluid.size(), [&](std::size_t i) { held[i] = scratch[i]; });
 }
 
 }  // namespace tide::passes

@@ -47,6 +47,21 @@ std::vector<std::pair<std::span<const Real>, std::span<const Real>>> contact_vol
 
 }  // namespace detail
 
+/// ∇·r_i = −Σ_j V_j x_ij·∇W_ij of fluid particle i over its fluid and contact neighbours
+/// (V_j = m_j/ρ_j; `contact_volumes` as for for_each_volume_neighbor).
+template <int D>
+Real position_divergence_of(
+    const RuntimeKernel<D>& kernel, std::size_t i, const FluidNeighbors<D>& neighbors, std::span<const Real> mass,
+    std::span<const Real> density,
+    const std::vector<std::pair<std::span<const Real>, std::span<const Real>>>& contact_volumes) {
+  Real sum = 0;
+  detail::for_each_volume_neighbor<D>(i, neighbors, mass, density, contact_volumes,
+                                      [&](Real volume, const Vector<D>& x_ij, Real r2) {
+                                        sum -= volume * x_ij.dot(kernel.gradient(x_ij, std::sqrt(r2)));
+                                      });
+  return sum;
+}
+
 /// The divergence of position ∇·r_i = −Σ_j V_j x_ij·∇W_ij over fluid and contact neighbours
 /// (V_j = m_j/ρ_j): the dimension inside the fluid, smaller where the support is partly empty,
 /// which marks the free surface (Lee et al. 2008; Lind et al. 2012 take ∇·r < 1.5 in 2D).
@@ -58,13 +73,7 @@ void position_divergence(const RuntimeKernel<D>& kernel, const ParticleSet<D>& f
   const auto volumes = detail::contact_volumes(interactions);
   for_each_fluid_particle<D>(interactions, fluid[f.position], ScalarOutput{divergence},
                              [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
-                               Real sum = 0;
-                               detail::for_each_volume_neighbor<D>(
-                                   i, neighbors, mass, density, volumes,
-                                   [&](Real volume, const Vector<D>& x_ij, Real r2) {
-                                     sum -= volume * x_ij.dot(kernel.gradient(x_ij, std::sqrt(r2)));
-                                   });
-                               return sum;
+                               return position_divergence_of<D>(kernel, i, neighbors, mass, density, volumes);
                              });
 }
 

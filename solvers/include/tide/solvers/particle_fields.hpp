@@ -17,7 +17,7 @@ struct FluidFields {
   ScalarField pressure;
   std::optional<ScalarField> density_rate;         // continuity density, and the incompressible solves
   std::optional<VectorField> shift;                // particle shifting
-  std::optional<ScalarField> position_divergence;  // ∇·r, the free-surface marker (shifting, continuity WCSPH)
+  std::optional<ScalarField> position_divergence;  // particle shifting: ∇·r, the free-surface marker
   std::optional<IndexField> phase;                 // several fluid materials: the particle's material index
   std::optional<VectorField> colour_gradient;      // surface tension csf (∇c) or akinci (the surface normal)
 };
