@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "scene_text.hpp"
+
 namespace tide::io {
 namespace {
 
@@ -11,8 +13,13 @@ std::vector<std::string> probe_comments(const scene::Scene& scene) {
   std::vector<std::string> comments{"TideSPH probes of scene " + scene.source};
   for (const scene::Probe& probe : scene.probes) {
     const bool pressure = probe.type == scene::ProbeType::pressure;
-    comments.push_back(probe.name + (pressure ? ": pressure (Pa) at " : ": water_height (m) above ") +
-                       vector_text(probe.position, scene.dimension));
+    std::string comment = probe.name + (pressure ? ": pressure (Pa) at " : ": water_height (m) above ") +
+                          vector_text(probe.position, scene.dimension);
+    if (probe.sensor) {
+      comment += ", mean over a sensing face " + format_number(probe.sensor->diameter) + " m across, normal " +
+                 vector_text(probe.sensor->normal, scene.dimension);
+    }
+    comments.push_back(std::move(comment));
   }
   return comments;
 }

@@ -34,6 +34,7 @@ std::vector<SectionDoc> section_docs() {
       section_doc("output", output_keys()),
       section_doc("output.recovery", recovery_keys()),
       section_doc("probes[i]", probe_keys()),
+      section_doc("probes[i].sensor", probe_sensor_keys()),
       section_doc("crowd", crowd_keys()),
       section_doc("crowd.agents[i]", crowd_agent_keys()),
       section_doc("crowd.exits[i]", crowd_exit_keys()),

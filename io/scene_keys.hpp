@@ -108,6 +108,7 @@ std::span<const Key<scene::Time>> time_keys();
 std::span<const Key<scene::Output>> output_keys();
 std::span<const Key<scene::Recovery>> recovery_keys();
 std::span<const Key<scene::Probe>> probe_keys();
+std::span<const Key<scene::ProbeSensor>> probe_sensor_keys();
 std::span<const Key<scene::Crowd>> crowd_keys();
 std::span<const Key<scene::AgentGroup>> crowd_agent_keys();
 std::span<const Key<scene::CrowdExit>> crowd_exit_keys();

@@ -103,7 +103,7 @@ std::span<const Key<scene::Recovery>> recovery_keys() {
 }
 
 std::span<const Key<scene::Probe>> probe_keys() {
-  static constexpr std::array<Key<scene::Probe>, 3> keys{{
+  static constexpr std::array<Key<scene::Probe>, 4> keys{{
       // A probe's name heads its column of probes.csv, so it must need no CSV quoting.
       {"name", "string of letters, digits, `_`, `-`, `.`; unique; not `time`", "–", "",
        "The probe's column in `probes.csv`.", Presence::required,
@@ -137,6 +137,31 @@ std::span<const Key<scene::Probe>> probe_keys() {
            }
          }
        }},
+      {"sensor", "object", "–", "none",
+       "Pressure probes only: the sensing face of a transducer, whose reading is the pressure over that face "
+       "(see below).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Probe& probe) {
+         read_section(values, value, probe_sensor_keys(), probe.sensor.emplace());
+       }},
+  }};
+  return keys;
+}
+
+std::span<const Key<scene::ProbeSensor>> probe_sensor_keys() {
+  static constexpr std::array<Key<scene::ProbeSensor>, 2> keys{{
+      {"diameter", "number > 0", "m", "",
+       "The diameter of the sensing face: a disc in 3D, a segment of that length in 2D.", Presence::required,
+       [](const ValueReader& values, const Node& value, scene::ProbeSensor& sensor) {
+         sensor.diameter = values.number(value, positive);
+       }},
+      {"normal", "non-zero vector", "–", "",
+       "The normal of the sensing face (the wall's normal, either way); the face is perpendicular to it.",
+       Presence::required,
+       [](const ValueReader& values, const Node& value, scene::ProbeSensor& sensor) {
+         sensor.normal = values.vector(value);
+         if (sensor.normal == scene::Vec{}) values.fail(value, "a non-zero vector");
+       }},
   }};
   return keys;
 }
@@ -154,6 +179,8 @@ void read_probes(const ValueReader& values, const Node& node, scene::Scene& scen
   for (const Node& entry : values.elements(node, 0, "an array of probes")) {
     scene::Probe probe;
     read_section(values, entry, probe_keys(), probe);
+    if (probe.sensor && probe.type != scene::ProbeType::pressure)
+      values.fail(child(entry, "sensor"), "no sensor: only a pressure probe has a sensing face");
     scene.probes.push_back(std::move(probe));
   }
 }

@@ -27,7 +27,9 @@ std::span<const Key<scene::Solver>> solver_keys() {
          solver.tait_exponent = values.number(value, positive);
        }},
       {"density", "string: `\"summation\"` or `\"continuity\"`", "–", "`\"summation\"`",
-       "Density by kernel summation, or integrated by the continuity equation with δ-SPH diffusion.",
+       "Density by kernel summation, or integrated by the continuity equation with δ-SPH diffusion; with "
+       "`clamp_negative_pressure`, a free-surface particle's integrated density is held at ρ₀ or above (p = 0 at "
+       "a free surface), so a splash does not carry the memory of its stretching.",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Solver& solver) {
          solver.density = values.choice(value, density_method_names);
@@ -71,7 +73,8 @@ std::span<const Key<scene::Solver>> solver_keys() {
        }},
       {"max_density_ratio", "number > 1", "–", "`1.5`",
        "Stability band: a run whose ρ/ρ₀ leaves [1/ratio, ratio] stops as unstable (the lower bound only with "
-       "`continuity` density: summation density is naturally low at a free surface).",
+       "`continuity` density: summation density is naturally low at a free surface, and a continuity free-surface "
+       "particle's density is held at ρ₀ or above, so the lower bound meets the bulk only).",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Solver& solver) {
          solver.max_density_ratio = values.number(value, above_one);

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "tide/solvers/particle_sampling.hpp"
+#include "tide/solvers/sensor_footprint.hpp"
 
 namespace tide {
 namespace {
@@ -56,6 +57,15 @@ Real probe_pressure(const Simulation<D>& simulation, const Vector<D>& point) {
       simulation, point, [&](Index j, const Vector<D>& x_pj) { return pressure[j] + density[j] * gravity.dot(x_pj); },
       at_rest);
   return simulation.scene().solver.clamp_negative_pressure ? std::max(p, Real(0)) : p;
+}
+
+template <int D>
+Real sensor_pressure(const Simulation<D>& simulation, const Vector<D>& centre, const scene::ProbeSensor& sensor) {
+  const std::vector<Vector<D>> points =
+      sensor_footprint<D>(centre, sensor, static_cast<Real>(simulation.scene().particle_spacing));
+  Real sum = 0;
+  for (const Vector<D>& point : points) sum += probe_pressure<D>(simulation, point);
+  return sum / static_cast<Real>(points.size());
 }
 
 template <int D>
@@ -110,14 +120,20 @@ std::vector<double> read_probes(const Simulation<D>& simulation, const std::vect
   values.reserve(probes.size());
   for (const scene::Probe& probe : probes) {
     const Vector<D> position = to_vector<D>(probe.position);
-    values.push_back(probe.type == scene::ProbeType::pressure ? probe_pressure<D>(simulation, position)
-                                                              : probe_water_height<D>(simulation, position));
+    if (probe.type == scene::ProbeType::water_height) {
+      values.push_back(probe_water_height<D>(simulation, position));
+    } else {
+      values.push_back(probe.sensor ? sensor_pressure<D>(simulation, position, *probe.sensor)
+                                    : probe_pressure<D>(simulation, position));
+    }
   }
   return values;
 }
 
 template Real probe_pressure<2>(const Simulation<2>&, const Vector<2>&);
 template Real probe_pressure<3>(const Simulation<3>&, const Vector<3>&);
+template Real sensor_pressure<2>(const Simulation<2>&, const Vector<2>&, const scene::ProbeSensor&);
+template Real sensor_pressure<3>(const Simulation<3>&, const Vector<3>&, const scene::ProbeSensor&);
 template Real fluid_colour<2>(const Simulation<2>&, const Vector<2>&);
 template Real fluid_colour<3>(const Simulation<3>&, const Vector<3>&);
 template Real probe_water_height<2>(const Simulation<2>&, const Vector<2>&);

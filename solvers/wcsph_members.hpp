@@ -17,6 +17,7 @@
 #include "passes/body_force.hpp"
 #include "passes/continuity.hpp"
 #include "passes/density_summation.hpp"
+#include "passes/free_surface_density.hpp"
 #include "passes/inflow.hpp"
 #include "passes/momentum.hpp"
 #include "passes/particle_shifting.hpp"
@@ -119,6 +120,8 @@ Pipeline Wcsph<D>::build_pipeline() {
   stages.push_back(neighbor_search_stage());
   if (scene_.solver.density == scene::DensityMethod::continuity)
     stages.push_back({"continuity", [this](StepContext& c) { integrate_density(step_gravity(c), c.dt); }});
+  if (holds_free_surface_density())
+    stages.push_back({"free_surface_density", [this](StepContext&) { hold_free_surface_density(); }});
   for (Stage& stage : force_stages()) stages.push_back(std::move(stage));
   stages.push_back({"kick", [this](StepContext& c) { kick(c.dt); }});
   if (!bodies_.empty())
@@ -323,6 +326,18 @@ void Wcsph<D>::integrate_density(const Vector<D>& gravity, Real dt) {
   auto density = fluid_[fluid_fields_.density];
   const auto rate = std::as_const(fluid_)[fluid_fields_.density_rate];
   for_each_particle(fluid_.size(), [&](std::size_t i) { density[i] += dt * rate[i]; });
+}
+
+template <int D>
+bool Wcsph<D>::holds_free_surface_density() const {
+  return scene_.solver.density == scene::DensityMethod::continuity && scene_.solver.clamp_negative_pressure;
+}
+
+template <int D>
+void Wcsph<D>::hold_free_surface_density() {
+  // Lind et al. 2012's free-surface threshold, ∇·r < D − ½, as for particle shifting.
+  passes::hold_free_surface_density<D>(kernel_, fluid_, fluid_fields_, interactions_, Real(D) - Real(0.5),
+                                       eos_.rest_density(), interactions_.pass_scratch(fluid_.size()));
 }
 
 template <int D>

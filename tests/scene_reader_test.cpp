@@ -888,6 +888,14 @@ TEST(SceneReaderRefuses, ShapesThatAreNotExactlyOne) {
                  "a non-zero vector");
 }
 
+TEST(SceneReader, ReadsAProbeSensor) {
+  const scene::Scene s = parse(with(full_2d_scene(), "/probes/0/sensor", {{"diameter", 0.0045}, {"normal", {-1, 0}}}));
+  ASSERT_TRUE(s.probes[0].sensor.has_value());
+  EXPECT_EQ(s.probes[0].sensor->diameter, 0.0045);
+  EXPECT_EQ(s.probes[0].sensor->normal, vec(-1, 0));
+  EXPECT_FALSE(s.probes[1].sensor.has_value());
+}
+
 TEST(SceneReaderRefuses, BadProbes) {
   expect_refused(with(full_2d_scene(), "/probes/0/type", "velocity"), "/probes/0/type",
                  R"(one of "pressure", "water_height")");
@@ -900,8 +908,16 @@ TEST(SceneReaderRefuses, BadProbes) {
                    "a name of letters, digits, '_', '-' and '.'");
   }
   expect_refused(with(full_2d_scene(), "/probes/0/where", 1), "/probes/0/where",
-                 R"(one of the keys "name", "type", "position")");
+                 R"(one of the keys "name", "type", "position", "sensor")");
   expect_refused(with(full_2d_scene(), "/probes", json::object()), "/probes", "an array of probes");
+  expect_refused(with(full_2d_scene(), "/probes/0/sensor", {{"diameter", 0}, {"normal", {-1, 0}}}),
+                 "/probes/0/sensor/diameter", "a number > 0");
+  expect_refused(with(full_2d_scene(), "/probes/0/sensor", {{"diameter", 0.01}, {"normal", {0, 0}}}),
+                 "/probes/0/sensor/normal", "a non-zero vector");
+  expect_refused(with(full_2d_scene(), "/probes/0/sensor", {{"diameter", 0.01}}), "/probes/0/sensor/normal",
+                 "an array of 2 numbers");
+  expect_refused(with(full_2d_scene(), "/probes/1/sensor", {{"diameter", 0.01}, {"normal", {0, 1}}}),
+                 "/probes/1/sensor", "only a pressure probe has a sensing face");
   expect_refused(with(full_2d_scene(), "/output/probe_interval", 0), "/output/probe_interval", "a number > 0");
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -97,9 +98,11 @@ std::vector<Real> state_after_100_steps(int threads, scene::Scheme scheme, scene
   s.solver.clamp_negative_pressure = clamp;
   const auto simulation = make_simulation<2>(s);
   std::vector<Real> state = state_after_steps(*simulation, 100);
-  const std::vector<scene::Probe> probes{{"wall", scene::ProbeType::pressure, {0, 0.1, 0}},
-                                         {"bulk", scene::ProbeType::pressure, {0.1, 0.05, 0}},
-                                         {"gauge", scene::ProbeType::water_height, {0.15, 0, 0}}};
+  const std::vector<scene::Probe> probes{
+      {"wall", scene::ProbeType::pressure, {0, 0.1, 0}, std::nullopt},
+      {"bulk", scene::ProbeType::pressure, {0.1, 0.05, 0}, std::nullopt},
+      {"gauge", scene::ProbeType::water_height, {0.15, 0, 0}, std::nullopt},
+      {"sensor", scene::ProbeType::pressure, {0, 0.05, 0}, scene::ProbeSensor{0.04, {1, 0, 0}}}};
   for (const double reading : read_probes<2>(*simulation, probes)) state.push_back(static_cast<Real>(reading));
   return state;
 }

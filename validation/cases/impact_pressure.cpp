@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "case_support.hpp"
 #include "tide/solvers/particle_sampling.hpp"
@@ -39,6 +40,38 @@ double first_reaching(const Curve& curve, double level, double first) {
 // run-up plateau by τ ≈ 3.5; the second peak (τ ≈ 5.8) is well after.
 constexpr double first_impact_end = 3.5;
 
+// The run-up plateau whose raw signal plateau_spread measures, in windows of a quarter unit of τ.
+constexpr double plateau_start = 3.5;
+constexpr double plateau_end = 5.5;
+constexpr double spread_window = 0.25;
+// A percentile below this share of ρgH counts as this much: the wall is not dry on the plateau, so
+// a reading of 0 is noise, and the ratio stays finite (a 90th percentile of 2 reads 200).
+constexpr double spread_floor = 0.01;
+
+/// The q-quantile of `values` (linear interpolation between order statistics).
+double quantile(std::vector<double> values, double q) {
+  std::sort(values.begin(), values.end());
+  const double position = q * static_cast<double>(values.size() - 1);
+  const auto below = static_cast<std::size_t>(position);
+  const std::size_t above = std::min(below + 1, values.size() - 1);
+  return values[below] + (position - static_cast<double>(below)) * (values[above] - values[below]);
+}
+
+/// The largest ratio of the 90th to the 10th percentile of the raw history in the quarter-τ
+/// windows of the plateau (the smoothness bound of issue 40: within a factor of 3).
+double plateau_spread(const Curve& history) {
+  double spread = 0;
+  for (double start = plateau_start; start + spread_window <= plateau_end + 1e-9; start += spread_window) {
+    std::vector<double> window;
+    for (std::size_t k = 0; k < history.x.size(); ++k)
+      if (history.x[k] >= start && history.x[k] < start + spread_window) window.push_back(history.y[k]);
+    if (window.empty()) continue;
+    spread =
+        std::max(spread, std::max(quantile(window, 0.9), spread_floor) / std::max(quantile(window, 0.1), spread_floor));
+  }
+  return spread;
+}
+
 }  // namespace
 
 Curve moving_average(const Curve& history, double width) {
@@ -55,7 +88,8 @@ Curve moving_average(const Curve& history, double width) {
   return filtered;
 }
 
-std::vector<Metric> buchner_metrics(const Curve& filtered) {
+std::vector<Metric> buchner_metrics(const Curve& history) {
+  const Curve filtered = moving_average(history, impact_filter_width);
   const Curve experiment = read_reference("buchner_2002_pressure_probe.csv");
   const Peak measured = peak_between(experiment, impact_window_start, first_impact_end);
   const Peak computed = peak_between(filtered, impact_window_start, first_impact_end);
@@ -69,7 +103,8 @@ std::vector<Metric> buchner_metrics(const Curve& filtered) {
           {"first_peak_time_error", computed.time - measured.time},
           {"impact_time_error", first_reaching(filtered, half_peak, impact_window_start) -
                                     first_reaching(experiment, half_peak, impact_window_start)},
-          {"pressure_l2_error", history_error.value()}};
+          {"pressure_l2_error", history_error.value()},
+          {"plateau_spread", plateau_spread(history)}};
 }
 
 template <int D>
@@ -84,8 +119,7 @@ RunRecord run_against_buchner(const std::string& case_name, const Variant& varia
     history.y.push_back(probe_pressure<D>(sim, probe) / pressure_scale);
   };
   const double wall_seconds = run_until(simulation, (impact_window_end + 0.2) / time_scale, record);
-  return make_record(case_name, variant, resolution, simulation, wall_seconds,
-                     buchner_metrics(moving_average(history, impact_filter_width)));
+  return make_record(case_name, variant, resolution, simulation, wall_seconds, buchner_metrics(history));
 }
 
 template RunRecord run_against_buchner<2>(const std::string&, const Variant&, int, Simulation<2>&, const Vector<2>&,
@@ -103,6 +137,9 @@ std::vector<std::string> buchner_metric_notes() {
       "pressure_l2_error: ‖p − p_exp‖₂ / ‖p_exp‖₂ at Buchner's points with 2 ≤ τ ≤ 5.3: the impact and the "
       "run-up plateau, before the rise to the second peak (τ ≈ 5.4–5.9) that the re-entry of the plunging "
       "breaker causes, an event of its own that depends on how the breaking is resolved",
+      "plateau_spread: the largest ratio of the 90th to the 10th percentile of the raw (unfiltered) p/(ρgH) in "
+      "the windows 0.25 wide in τ over the run-up plateau 3.5 ≤ τ ≤ 5.5 (percentiles below 0.01 count as 0.01): "
+      "how much the signal a probe writes jumps, where the experiment's is smooth",
       "filter: the simulated history is sampled every step and averaged over a centred window 0.1 wide in τ "
       "(half the rise of Buchner's first impact, τ = 2.49 to 2.68, so the average keeps what the experiment "
       "resolves) before "

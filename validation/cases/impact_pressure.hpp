@@ -25,9 +25,10 @@ inline constexpr double impact_filter_width = 0.1;
 /// `width` in τ.
 Curve moving_average(const Curve& history, double width);
 
-/// first_peak_error, first_peak_time_error, impact_time_error and pressure_l2_error of a
-/// filtered history against validation/data/buchner_2002_pressure_probe.csv.
-std::vector<Metric> buchner_metrics(const Curve& filtered);
+/// first_peak_error, first_peak_time_error, impact_time_error and pressure_l2_error of a probe
+/// history (sampled every step) filtered by moving_average over impact_filter_width, against
+/// validation/data/buchner_2002_pressure_probe.csv, and plateau_spread of the raw history.
+std::vector<Metric> buchner_metrics(const Curve& history);
 
 /// Steps `simulation` (column height `height`) until τ = impact_window_end + 0.2, reading the
 /// pressure probe at `probe` after every step, and returns the run's record with the

@@ -245,10 +245,18 @@ struct Output {
 /// of the free surface above its position along the up (−gravity) direction.
 enum class ProbeType { pressure, water_height };
 
+/// A pressure sensor's sensing face (docs/scenes.md, "probes"): a disc (3D) or a segment (2D) of
+/// `diameter` centred on the probe's position, perpendicular to `normal`.
+struct ProbeSensor {
+  double diameter = 0;  // m
+  Vec normal{};         // the face's normal, any length but 0
+};
+
 struct Probe {
   std::string name;  // the probe's column in probes.csv
   ProbeType type = ProbeType::pressure;
   Vec position{};
+  std::optional<ProbeSensor> sensor;  // pressure only; none: the reading at the point
 };
 
 /// `count` agents spread evenly over a region (docs/crowds.md, "Agents"), walking to the nearest

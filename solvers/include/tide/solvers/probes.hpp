@@ -61,6 +61,15 @@ Value shepard_interpolation(const Simulation<D>& simulation, const Vector<D>& po
 template <int D>
 Real probe_pressure(const Simulation<D>& simulation, const Vector<D>& point);
 
+/// What a transducer whose sensing face is `sensor`, centred on `centre`, reads: the mean pressure
+/// over the face, the force on it over its area, p̄ = (1/A) ∫_A p dA, by the midpoint rule over
+/// sensor_footprint's points with p the probe_pressure at each. Where part of the face is dry
+/// (no fluid within a kernel support), that part reads the pressure at rest, 0, as on a real
+/// sensor. A face wider than the particle spacing averages the particle-scale noise of the
+/// reading across its area, as a transducer's finite face does.
+template <int D>
+Real sensor_pressure(const Simulation<D>& simulation, const Vector<D>& centre, const scene::ProbeSensor& sensor);
+
 /// The fluid colour at `point`: the share of the kernel's volume there that holds fluid,
 ///   c(x) = Σ_f V_f W(x − x_f) / (1 − Σ_w V_w W(x − x_w)),   V = m / ρ0,
 /// 1 inside the fluid, about ½ at its free surface, 0 in empty space. The denominator removes
@@ -84,6 +93,8 @@ std::vector<double> read_probes(const Simulation<D>& simulation, const std::vect
 
 extern template Real probe_pressure<2>(const Simulation<2>&, const Vector<2>&);
 extern template Real probe_pressure<3>(const Simulation<3>&, const Vector<3>&);
+extern template Real sensor_pressure<2>(const Simulation<2>&, const Vector<2>&, const scene::ProbeSensor&);
+extern template Real sensor_pressure<3>(const Simulation<3>&, const Vector<3>&, const scene::ProbeSensor&);
 extern template Real fluid_colour<2>(const Simulation<2>&, const Vector<2>&);
 extern template Real fluid_colour<3>(const Simulation<3>&, const Vector<3>&);
 extern template Real probe_water_height<2>(const Simulation<2>&, const Vector<2>&);

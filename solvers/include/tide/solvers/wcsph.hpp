@@ -117,6 +117,10 @@ class Wcsph final : public Simulation<D> {
   /// Continuity density: ρ += Δt Dρ/Dt.
   void integrate_density(const Vector<D>& gravity, Real dt);
   void compute_density_rate(const Vector<D>& gravity);
+  /// Continuity density with clamped pressure: a free-surface particle's density is held at ρ0 or
+  /// above (passes/free_surface_density.hpp).
+  bool holds_free_surface_density() const;
+  void hold_free_surface_density();
   void shift_particles(Real dt);
   /// The inflow buffer (domain.inflow, which the scene must have): its particles at the inflow
   /// velocity, moved as if they had drifted at it over `drift_time`.
