@@ -359,6 +359,7 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
                                      pressure_term_);
       }
       measure(fluid_fields_.velocity, false);
+      ++report.sweeps;
       if ((report.converged && report.iterations >= min_iterations) || report.iterations >= max_iterations) break;
       // Projected Jacobi: p stays ≥ 0, so the fluid takes no tension (Ihmsen et al. 2014, Alg. 1),
       // unless the scene lets the pressure take both signs.
@@ -388,6 +389,7 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
       return;
     }
     report.iterations = pressed.iterations;
+    report.sweeps = pressed.sweeps;
     auto v = fluid_[fluid_fields_.velocity];
     const auto predicted = std::as_const(fluid_)[solve_fields_.predicted_velocity];
     for_each_particle(fluid_.size(), [&](std::size_t i) {
