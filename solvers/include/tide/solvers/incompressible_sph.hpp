@@ -31,16 +31,15 @@ struct PressureSolveFields {
 
 /// Incompressible SPH, DFSPH or IISPH (IncompressibleScheme says which): density by summation,
 /// the non-pressure forces (viscosity of the WCSPH passes, gravity) integrated first, then the
-/// pressure that brings every particle's predicted density to ρ0 found by Jacobi sweeps, with an
-/// adaptive time step from the flow speed alone. Walls are the WCSPH wall particles, with their
-/// pressure extrapolated from the fluid's before every sweep (passes/pressure_solve.hpp). The first
-/// solve starts from the hydrostatic pressure. A solve that misses its threshold within the iteration cap logs a
-/// warning; solver.max_failed_solves consecutive steps with such a miss stop the run with an
-/// InstabilityError. Several fluids (rest densities within max_incompressible_density_ratio of
-/// each other) take the number-density form of WCSPH's multiphase passes (density
-/// ρ_i = m_i Σ_j W_ij and the pressure force of Hu & Adams 2006), each particle's density driven
-/// to the rest density of its phase, from a layered hydrostatic start. Every pass gathers, so
-/// results are bitwise identical for any thread count.
+/// pressure that brings every particle's predicted density to ρ0 found by preconditioned conjugate gradients (several
+/// fluids: Jacobi sweeps), with an adaptive time step from the flow speed alone. Walls are the WCSPH wall particles,
+/// with their pressure extrapolated from the fluid's before every sweep (passes/pressure_solve.hpp). The first solve
+/// starts from the hydrostatic pressure. A solve that misses its threshold within the iteration cap logs a warning;
+/// solver.max_failed_solves consecutive steps with such a miss stop the run with an InstabilityError. Several fluids
+/// (rest densities within max_incompressible_density_ratio of each other) take the number-density form of WCSPH's
+/// multiphase passes (density ρ_i = m_i Σ_j W_ij and the pressure force of Hu & Adams 2006), each particle's density
+/// driven to the rest density of its phase, from a layered hydrostatic start. Every pass gathers, so results are
+/// bitwise identical for any thread count.
 template <int D>
 class IncompressibleSph final : public Simulation<D> {
  public:
@@ -110,7 +109,21 @@ class IncompressibleSph final : public Simulation<D> {
   ParticleSet<D> fluid_;
   FluidFields<D> fluid_fields_;
   PressureSolveFields<D> solve_fields_;
-  std::vector<Real> before_sweep_;   // p⁽ᵏ⁻¹⁾ of the Chebyshev recurrence; scratch of one solve, not sorted
+  // Scratch of one solve, not sorted: the conjugate gradients' iterate p_k (several fluids: p⁽ᵏ⁻¹⁾ of
+  // the Chebyshev recurrence), residual ρ* − ρ0, search direction (in p), and the particles held
+  // at p = 0 (solve()).
+  std::vector<Real> iterate_;
+  std::vector<Real> start_;  // the pressure the conjugate gradients started from
+  std::vector<Real> residual_;
+  std::vector<Real> direction_;
+  std::vector<unsigned char> held_;
+  // The walls' adjoint term of the density error (passes::wall_pressure_adjoint): per fluid
+  // particle, and per wall particle of each contact.
+  std::vector<Real> adjoint_;
+  std::vector<std::vector<Real>> wall_adjoint_;
+  // Σ_i (|Δt a_i|² + |v_i − v*_i|²) of the step's density solve: the scale of the divergence
+  // solve's stopping test.
+  Real reference_energy_ = 0;
   std::vector<Real> pressure_term_;  // p/ρ² of one fluid in a sweep (passes::pressure_velocity); scratch
   // One fluid whose particles all have one mass, and walls of one mass: the sweeps read the masses
   // so (passes::NeighborMasses). Set with the gradient cache, after every neighbour update.
