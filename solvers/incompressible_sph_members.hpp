@@ -309,8 +309,11 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
     return phase.empty() ? rest_density_ : phases_->table[phase[i]].rest_density;
   };
   const auto weight_at = [&](std::size_t i) { return phase.empty() ? Real(1) : phase_weight[phase[i]]; };
-  if (phases_) iterate_.resize(fluid_.size());
-  bool symmetric_walls = !phases_ && interactions_.contact_count() > 0;
+  // Conjugate gradients where the scene asks for them and there is one fluid (several fluids: the
+  // projected Jacobi sweeps, whose update need not be symmetric).
+  const bool conjugate = !phases_ && scene_.solver.pressure_solver == scene::PressureSolver::conjugate_gradients;
+  if (!conjugate) iterate_.resize(fluid_.size());
+  bool symmetric_walls = conjugate && interactions_.contact_count() > 0;
   if (symmetric_walls) adjoint_.resize(fluid_.size());
   pressure_term_.resize(phases_ ? 0 : fluid_.size());
   Real weight = 1;
@@ -423,7 +426,7 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
         sweep();
       }
     };
-    if (phases_) {
+    if (!conjugate) {
       sweep();
       jacobi();
     } else {
@@ -594,7 +597,7 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
     // if it meets the threshold (and, for the conjugate gradients, the pressure moves the fluid
     // by less than their accuracy), kept.
     if (!report.converged || report.iterations > least_iterations || warm_start == 0) return;
-    if (!phases_ && pressure_energy() > accuracy) return;
+    if (conjugate && pressure_energy() > accuracy) return;
     const SolveReport pressed = report;
     measure(solve_fields_.predicted_velocity, true);
     if (!report.converged) {
