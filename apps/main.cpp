@@ -7,11 +7,13 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <string>
 
 #include "oil_study_command.hpp"
 #include "render_command.hpp"
 #include "run_command.hpp"
 #include "scene_keys_command.hpp"
+#include "serve_command.hpp"
 #include "stress_command.hpp"
 #include "surface_command.hpp"
 #include "tide/core/config.hpp"
@@ -21,16 +23,21 @@
 
 namespace {
 
-// The shipped default scene: next to an installed binary (../share/tide/scenes), else in the
-// source tree the binary was built from.
-std::filesystem::path default_scene() {
+// A shipped file or folder: next to an installed binary (../share/tide/<installed>), else
+// `in_source` in the source tree the binary was built from.
+std::filesystem::path shipped(const std::string& installed, const std::filesystem::path& in_source) {
   std::error_code error;
   const auto executable = std::filesystem::read_symlink("/proc/self/exe", error);
   if (!error) {
-    const auto installed = executable.parent_path().parent_path() / "share/tide/scenes/dam_break_2d.json";
-    if (std::filesystem::exists(installed)) return installed;
+    const auto path = executable.parent_path().parent_path() / "share/tide" / installed;
+    if (std::filesystem::exists(path)) return path;
   }
-  return std::filesystem::path(TIDE_SOURCE_SCENES_DIR) / "dam_break_2d.json";
+  return in_source;
+}
+
+// The shipped default scene of tide run.
+std::filesystem::path default_scene() {
+  return shipped("scenes/dam_break_2d.json", std::filesystem::path(TIDE_SOURCE_SCENES_DIR) / "dam_break_2d.json");
 }
 
 // The run directory, --frames, --out and --spacing of a command that turns frames into pictures.
@@ -71,6 +78,14 @@ int main(int argc, char** argv) {
   run->add_option("--out", run_options.output_directory, "output directory (default: runs/<scene name>)");
   run->add_option("--until", run_options.until, "end time in s, overriding the scene's");
   run->add_flag("--quiet", run_options.quiet, "no progress output");
+  run->add_option("--checkpoint-every", run_options.checkpoint_every,
+                  "write <out>/checkpoint.h5 every T s of simulated time (and after the last step)")
+      ->check(CLI::PositiveNumber);
+  run->add_option("--checkpoint-wall", run_options.checkpoint_wall,
+                  "write <out>/checkpoint.h5 every S s of wall-clock time (and after the last step)")
+      ->check(CLI::PositiveNumber);
+  run->add_option("--resume", run_options.resume,
+                  "continue the run in DIR from its checkpoint.h5 (the scene: the one given, else the checkpoint's)");
   bool render_after_run = false;
   run->add_flag("--render", render_after_run, "render the frames as PNG (and MP4 with ffmpeg) at the end: tide render");
   run->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
@@ -152,9 +167,36 @@ int main(int argc, char** argv) {
                      "field to colour by; a vector by its magnitude (default: velocity)");
   render->add_option("--colormap", render_options.colormap, "viridis, inferno or gray (default: viridis)");
   render->add_option("--size", render_options.size, "picture size WxH in pixels (default: 1280x720)");
-  render->add_flag("--surface", render_options.surface,
-                   "3D: draw the fluid surface (as tide surface reconstructs it) instead of the particles");
+  CLI::Option* surface_flag =
+      render->add_flag("--surface", render_options.surface,
+                       "3D: draw the fluid surface (as tide surface reconstructs it) instead of the particles");
+  render
+      ->add_flag("--heatmap", render_options.heatmap,
+                 "2D: colour the floor by the points' kernel-summed density (a crowd's agents/m^2)")
+      ->excludes(surface_flag);
+  render
+      ->add_option("--smoothing-length", render_options.smoothing_length,
+                   "h in m of the heat map's Wendland C2 kernel (default: 0.5, the shipped crowd scenes')")
+      ->check(CLI::PositiveNumber);
+  render
+      ->add_option("--heatmap-max", render_options.heatmap_max,
+                   "top of the heat map's colour scale (default: 6 agents/m^2)")
+      ->check(CLI::PositiveNumber);
   render->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
+
+  tide::app::ServeOptions serve_options;
+  CLI::App* serve = app.add_subcommand(
+      "serve",
+      "run a 2D scene live in a web page: drag the obstacle, change gravity, viscosity, particles (docs/serve.md)");
+  serve->add_option("scene", serve_options.scene_file, "2D scene file (default: the shipped tank, serve_tank_2d.json)");
+  serve->add_option("--port", serve_options.port, "TCP port; 0 takes a free one (default: 8080)")
+      ->check(CLI::Range(0, 65535));
+  serve->add_option("--host", serve_options.host, "address to listen on (default: 127.0.0.1, this machine only)");
+  serve
+      ->add_option("--pace", serve_options.pace,
+                   "simulated seconds per wall second at most; 0 runs as fast as it can (default: 1)")
+      ->check(CLI::Range(0.0, 100.0));
+  serve->add_option("--threads", threads, "number of worker threads (default: all cores)")->check(CLI::PositiveNumber);
 
   std::filesystem::path keys_docs = "docs/scenes.md", keys_dictionary = "fuzz/scene.dict";
   CLI::App* scene_keys = app.add_subcommand(
@@ -177,13 +219,20 @@ int main(int argc, char** argv) {
     std::optional<tide::ThreadLimit> limit;
     if (threads > 0) limit.emplace(threads);
     if (*run) {
-      if (run_options.scene_file.empty()) run_options.scene_file = default_scene();
+      if (run_options.scene_file.empty() && run_options.resume.empty()) run_options.scene_file = default_scene();
       const int status = tide::app::run_scene(run_options);
       if (status != tide::app::exit_ok || !render_after_run) return status;
       render_options.input.run_directory = tide::app::run_output_directory(run_options);
       return tide::app::render_frames(render_options);
     }
     if (*check) return tide::app::check_scene(check_file);
+    if (*serve) {
+      if (serve_options.scene_file.empty())
+        serve_options.scene_file =
+            shipped("scenes/serve_tank_2d.json", std::filesystem::path(TIDE_SOURCE_SCENES_DIR) / "serve_tank_2d.json");
+      serve_options.web_root = shipped("web", TIDE_SOURCE_WEB_DIR);
+      return tide::app::serve_scene(serve_options);
+    }
     if (*validate) {
       validate_options.command_line = tide::app::quoted_command_line(argc, argv);
       return tide::app::validate(validate_options);

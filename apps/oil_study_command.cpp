@@ -213,7 +213,12 @@ int oil_study(const OilStudyOptions& options) {
     if (!reached_end(run)) {
       std::printf("oil-study: running %s until t = %g s ...\n", run.name.c_str(), run.end_time);
       std::fflush(stdout);
-      const int code = run_scene({run.scene, out / run.name, options.until, true});
+      RunOptions run_options;
+      run_options.scene_file = run.scene;
+      run_options.output_directory = out / run.name;
+      run_options.until = options.until;
+      run_options.quiet = true;
+      const int code = run_scene(run_options);
       if (code != exit_ok) std::cerr << "tide: oil-study: " << run.name << " stopped with exit code " << code << '\n';
       read_recovery(recovery, run);
     }

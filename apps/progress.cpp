@@ -20,13 +20,15 @@ std::string format_seconds(double seconds) {
 }  // namespace
 
 Progress::Progress(std::ostream& out, bool terminal, bool quiet, double start_time, double end_time,
-                   std::size_t particles)
+                   std::size_t particles, double from_time, std::uint64_t from_step)
     : out_(out),
       terminal_(terminal),
       quiet_(quiet),
       start_time_(start_time),
       end_time_(end_time),
       particles_(particles),
+      from_time_(from_time),
+      from_step_(from_step),
       wall_start_(std::chrono::steady_clock::now()),
       last_draw_(wall_start_) {}
 
@@ -44,8 +46,9 @@ void Progress::update(double time, std::uint64_t steps, bool force) {
 
   const double fraction = std::clamp((time - start_time_) / (end_time_ - start_time_), 0.0, 1.0);
   const double wall = wall_seconds();
-  const double eta = fraction > 0 ? wall * (1 - fraction) / fraction : 0;
-  const double rate = wall > 0 ? static_cast<double>(particles_) * static_cast<double>(steps) / wall : 0;
+  const double done = time - from_time_;  // by this process
+  const double eta = done > 0 ? wall * std::max(end_time_ - time, 0.0) / done : 0;
+  const double rate = wall > 0 ? static_cast<double>(particles_) * static_cast<double>(steps - from_step_) / wall : 0;
   char line[256];
   std::snprintf(line, sizeof line, "t = %.4g / %.4g s  step %llu  wall %s  ETA %s  %.3g M particle-steps/s", time,
                 end_time_, static_cast<unsigned long long>(steps), format_seconds(wall).c_str(),

@@ -5,14 +5,17 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
 #include "movie.hpp"
 #include "run_command.hpp"
 #include "run_frames.hpp"
+#include "tide/core/parallel.hpp"
 #include "tide/io/frame_writer.hpp"
 #include "tide/render/camera.hpp"
+#include "tide/render/density_heatmap.hpp"
 #include "tide/render/mesh_shading.hpp"
 #include "tide/render/particle_splats.hpp"
 #include "tide/render/picture_labels.hpp"
@@ -108,7 +111,7 @@ constexpr render::Colour water = {0x4a, 0x90, 0xd9};
 }  // namespace
 
 int render_frames(const RenderOptions& options) {
-  const std::string field = options.surface ? "" : options.field;
+  const std::string field = options.surface || options.heatmap ? "" : options.field;
   std::vector<FrameFile> frames;
   PictureSize size;
   std::optional<render::ColourScale> scale;
@@ -122,8 +125,21 @@ int render_frames(const RenderOptions& options) {
     extent = measure(frames, field);
     if (options.surface && extent.dimension != 3)
       throw std::invalid_argument("--surface draws the surfaces of 3D runs; tide surface writes a 2D run's outlines");
-    scale->low = extent.low;
-    scale->high = extent.high;
+    if (options.heatmap && extent.dimension != 2)
+      throw std::invalid_argument("--heatmap draws the density of a 2D run's points over its floor");
+    if (options.heatmap) {
+      // Every frame on one scale from an empty floor, and the points' kernels whole in the picture.
+      scale->low = 0;
+      scale->high = options.heatmap_max;
+      extent.label = "agents/m2";
+      for (int d = 0; d < 2; ++d) {
+        extent.lowest[static_cast<std::size_t>(d)] -= 2 * options.smoothing_length;
+        extent.highest[static_cast<std::size_t>(d)] += 2 * options.smoothing_length;
+      }
+    } else {
+      scale->low = extent.low;
+      scale->high = extent.high;
+    }
     spacing = particle_spacing(options.input, all_frames.front());
   } catch (const std::exception& error) {
     std::cerr << "tide render: " << error.what() << '\n';
@@ -135,29 +151,45 @@ int render_frames(const RenderOptions& options) {
   const render::PixelRegion bar = {size.width - 140, 70, 24, size.height - 120};
   const render::Camera camera = extent.dimension == 2 ? render::camera_2d(extent.lowest, extent.highest, plot)
                                                       : render::camera_3d(extent.lowest, extent.highest, plot);
-  for (const FrameFile& file : frames) {
-    ColouredFrame frame;
-    try {
-      frame = read_coloured_frame(file.path, field);
-    } catch (const std::exception& error) {
-      std::cerr << "tide render: " << error.what() << '\n';
-      return exit_bad_input;
+  // Frames are drawn in parallel, one a task; HDF5 (Debian's build is not thread-safe) reads one
+  // frame at a time. A frame that cannot be read is reported after the others, the first in
+  // frame order, whatever the threads' order.
+  std::mutex reading;
+  std::vector<std::string> read_errors(frames.size());
+  parallel_blocks(frames.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      const FrameFile& file = frames[f];
+      ColouredFrame frame;
+      try {
+        const std::lock_guard<std::mutex> lock(reading);
+        frame = read_coloured_frame(file.path, field);
+      } catch (const std::exception& error) {
+        read_errors[f] = error.what();
+        continue;
+      }
+      render::Image image(size.width, size.height, {0xff, 0xff, 0xff});
+      if (options.surface) {
+        const scene::TriangleMesh mesh =
+            surface::reconstruct_surface(frame.positions.values, {.particle_spacing = spacing});
+        render::draw_mesh(image, camera, mesh, water);
+      } else if (options.heatmap) {
+        render::draw_density_heatmap(image, camera, frame.positions.values, options.smoothing_length, *scale);
+      } else {
+        render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
+                               spacing / 2);
+      }
+      if (!options.surface) render::draw_colour_bar(image, bar, *scale, extent.label);
+      render::draw_time_stamp(image, frame.positions.time);
+      render::write_png(directory / numbered_file_name("frame", file.number, ".png"), image);
     }
-    render::Image image(size.width, size.height, {0xff, 0xff, 0xff});
-    if (options.surface) {
-      const scene::TriangleMesh mesh =
-          surface::reconstruct_surface(frame.positions.values, {.particle_spacing = spacing});
-      render::draw_mesh(image, camera, mesh, water);
-    } else {
-      render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
-                             spacing / 2);
-      render::draw_colour_bar(image, bar, *scale, extent.label);
-    }
-    render::draw_time_stamp(image, frame.positions.time);
-    render::write_png(directory / numbered_file_name("frame", file.number, ".png"), image);
+  });
+  for (const std::string& error : read_errors) {
+    if (error.empty()) continue;
+    std::cerr << "tide render: " << error << '\n';
+    return exit_bad_input;
   }
-  std::cout << "tide render: " << frames.size() << " PNG frame(s) of "
-            << (options.surface ? "the surface" : options.field) << " in " << directory.string() << '\n';
+  const std::string what = options.surface ? "the surface" : options.heatmap ? "the density heat map" : options.field;
+  std::cout << "tide render: " << frames.size() << " PNG frame(s) of " << what << " in " << directory.string() << '\n';
   if (assemble_movie(directory, frames.front().number, directory / "movie.mp4"))
     std::cout << "tide render: movie " << (directory / "movie.mp4").string() << '\n';
   return exit_ok;

@@ -3,8 +3,10 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -17,6 +19,8 @@
 #include <vector>
 
 #include "progress.hpp"
+#include "run_outputs.hpp"
+#include "tide/io/checkpoint_file.hpp"
 #include "tide/io/crowd_writer.hpp"
 #include "tide/io/frame_writer.hpp"
 #include "tide/io/probe_writer.hpp"
@@ -40,17 +44,6 @@ std::string limit_counts(const TimeStepTally& tally) {
   }
   return text.str();
 }
-
-// The pressure solves of one kind over a run, for its summary and its frames.
-struct SolveTallies {
-  SolveTally density;
-  SolveTally divergence;
-
-  void add(const StepReport& report) {
-    if (report.density_solve) density.add(*report.density_solve);
-    if (report.divergence_solve) divergence.add(*report.divergence_solve);
-  }
-};
 
 void add_solve_attributes(const std::string& name, const SolveTally& tally,
                           std::map<std::string, std::string>& attributes) {
@@ -82,50 +75,6 @@ std::map<std::string, std::string> frame_attributes(const TimeStepTally& since_l
   }
   return attributes;
 }
-
-/// The times of a periodic output: one is due once the time passes the next output time (within
-/// round-off of the sum of intervals).
-class OutputSchedule {
- public:
-  OutputSchedule(double first, double interval) : next_(first), interval_(interval) {}
-  bool due(double time) const { return time >= next_ - 1e-9 * interval_; }
-  void advance_past(double time) {
-    while (next_ <= time + 1e-9 * interval_) next_ += interval_;
-  }
-
- private:
-  double next_;
-  double interval_;
-};
-
-/// A time series read every output.probe_interval into a CSV file; does nothing without a writer.
-template <int D>
-class SeriesRecorder {
- public:
-  using Reading = std::function<std::vector<double>(const Simulation<D>&)>;
-
-  SeriesRecorder(const scene::Scene& scene, std::unique_ptr<io::SeriesWriter> writer, Reading read)
-      : writer_(std::move(writer)), read_(std::move(read)), schedule_(scene.time.start, scene.output.probe_interval) {}
-
-  bool active() const { return writer_ != nullptr; }
-  const io::SeriesWriter& writer() const { return *writer_; }
-
-  /// Adds a row if one is due at the simulation's time.
-  void record(const Simulation<D>& simulation) {
-    if (!active() || !schedule_.due(simulation.time())) return;
-    writer_->add(simulation.time(), read_(simulation));
-    schedule_.advance_past(simulation.time());
-  }
-
-  void write() const {
-    if (active()) writer_->write();
-  }
-
- private:
-  std::unique_ptr<io::SeriesWriter> writer_;
-  Reading read_;
-  OutputSchedule schedule_;
-};
 
 /// Each rigid body's state into <out>/bodies.csv, columns "<key path>.<quantity>": the centre of
 /// mass, the orientation (2D: the angle about z; 3D: the unit quaternion w, x, y, z from the
@@ -262,6 +211,15 @@ class MovingWallFrames {
     }
   }
 
+  void save(StateArchive& archive) const {
+    for (std::size_t w = 0; w < writers_.size(); ++w)
+      save_grids(archive, "run/wall_frames/" + std::to_string(w), writers_[w].xdmf_grids());
+  }
+  void restore(const StateArchive& archive) {
+    for (std::size_t w = 0; w < writers_.size(); ++w)
+      writers_[w].continue_after(restore_grids(archive, "run/wall_frames/" + std::to_string(w)));
+  }
+
  private:
   // "walls.obstacles[2]" -> "walls_obstacles_2": letters and digits kept, runs of others one '_'.
   static std::string run_name(const std::string& contact) {
@@ -281,12 +239,65 @@ class MovingWallFrames {
   std::vector<io::FrameWriter<D>> writers_;
 };
 
+/// Everything `tide run` keeps between two steps, into a checkpoint and back: the simulation's
+/// state and the run's outputs so far (frames named in the XDMF files, series rows, schedules,
+/// tallies).
+template <int D>
+struct RunState {
+  Simulation<D>& simulation;
+  std::vector<SeriesRecorder<D>>& series;
+  io::FrameWriter<D>& frames;
+  MovingWallFrames<D>& wall_frames;
+  OutputSchedule& frame_schedule;
+  RunTallies& tallies;
+
+  StateArchive save() const {
+    StateArchive archive;
+    simulation.save(archive);
+    for (std::size_t k = 0; k < series.size(); ++k) series[k].save(archive, "run/series/" + std::to_string(k));
+    save_grids(archive, "run/frames", frames.xdmf_grids());
+    wall_frames.save(archive);
+    frame_schedule.save(archive, "run/frames/next");
+    tallies.save(archive, "run/tallies");
+    return archive;
+  }
+
+  void restore(const StateArchive& archive) {
+    simulation.restore(archive);
+    for (std::size_t k = 0; k < series.size(); ++k) series[k].restore(archive, "run/series/" + std::to_string(k));
+    frames.continue_after(restore_grids(archive, "run/frames"));
+    wall_frames.restore(archive);
+    frame_schedule.restore(archive, "run/frames/next");
+    tallies.restore(archive, "run/tallies");
+  }
+};
+
+/// The checkpoints a run wrote: how many, and the size and write time of the last.
+struct CheckpointTally {
+  std::size_t written = 0;
+  std::uintmax_t bytes = 0;
+  double seconds = 0;
+};
+
 template <int D>
 int run(const scene::Scene& scene, const RunOptions& options, const std::filesystem::path& output_directory) {
+  const std::filesystem::path checkpoint_file = checkpoint_path(output_directory);
+  const bool checkpoints_asked = options.checkpoint_every || options.checkpoint_wall;
+  io::CheckpointIdentity identity;
+  std::optional<StateArchive> resumed;
+  try {
+    // A run that neither resumes nor writes checkpoints does not read its scene file again.
+    if (checkpoints_asked || !options.resume.empty()) identity = io::checkpoint_identity(options.scene_file, D);
+    if (!options.resume.empty()) resumed = io::read_checkpoint(checkpoint_file, identity);
+  } catch (const std::runtime_error& error) {
+    std::cerr << "tide: cannot resume: " << error.what() << '\n';
+    return exit_bad_input;
+  }
   std::unique_ptr<Simulation<D>> simulation;
   std::vector<SeriesRecorder<D>> series;
   try {
     simulation = make_simulation<D>(scene);
+    // Before a restore: the recovery's initial mass is that of the start, as in the run resumed.
     series = series_recorders<D>(scene, *simulation, output_directory);
   } catch (const InstabilityError& error) {
     std::cerr << "tide: " << scene.source << ": the initial state is already out of bounds: " << error.what() << '\n';
@@ -299,48 +310,73 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   MovingWallFrames<D> wall_frames(*simulation, output_directory);
   const double end_time = scene.time.end;
   const double interval = scene.time.output_interval;
+  OutputSchedule frames(scene.time.start + interval, interval);
+  RunTallies tallies;
+  RunState<D> state{*simulation, series, writer, wall_frames, frames, tallies};
+  if (resumed) {
+    try {
+      state.restore(*resumed);
+    } catch (const std::exception& error) {  // an entry missing or of another length: a damaged checkpoint
+      std::cerr << "tide: cannot resume from " << checkpoint_file.string() << ": " << error.what() << '\n';
+      return exit_bad_input;
+    }
+    resumed.reset();
+  }
   const std::size_t particles = simulation->fluid().size();
   if (!options.quiet) {
-    std::cout << "tide: running " << scene.source << " (" << scheme_name(scene.solver.scheme) << ", " << D << "D, "
-              << particles << " fluid and " << simulation->interactions().contact_particle_count()
-              << " wall particles) until t = " << end_time << " s; frames every " << interval << " s into "
-              << output_directory.string() << '\n';
+    std::cout << "tide: " << (options.resume.empty() ? "running " : "resuming ") << scene.source << " ("
+              << scheme_name(scene.solver.scheme) << ", " << D << "D, " << particles << " fluid and "
+              << simulation->interactions().contact_particle_count() << " wall particles) "
+              << (options.resume.empty() ? "" : "at t = " + std::to_string(simulation->time()) + " s ")
+              << "until t = " << end_time << " s; frames every " << interval << " s into " << output_directory.string()
+              << '\n';
   }
   const bool terminal = isatty(fileno(stdout)) != 0;
-  Progress progress(std::cout, terminal, options.quiet, scene.time.start, end_time, particles);
+  const std::uint64_t first_step = simulation->step_count();  // a resumed run's steps before this process
+  Progress progress(std::cout, terminal, options.quiet, scene.time.start, end_time, particles, simulation->time(),
+                    first_step);
 
-  TimeStepTally run_tally, frame_tally;
-  SolveTallies run_solves, frame_solves;
-  writer.write(simulation->fluid(), simulation->time(), 0);
-  wall_frames.write(*simulation);
   const auto record_series = [&] {
     for (auto& recorder : series) recorder.record(*simulation);
   };
   const auto write_series = [&] {
     for (const auto& recorder : series) recorder.write();
   };
-  record_series();
+  if (options.resume.empty()) {
+    writer.write(simulation->fluid(), simulation->time(), 0);
+    wall_frames.write(*simulation);
+    record_series();
+  }
+  // On resume, the series files go back to the checkpoint's rows: those the run wrote after it
+  // come again from the steps that follow.
   write_series();
-  OutputSchedule frames(scene.time.start + interval, interval);
+  CheckpointSchedule checkpoints(options.checkpoint_every, options.checkpoint_wall, scene.time.start,
+                                 simulation->time());
+  CheckpointTally checkpoint_tally;
+  const auto write_checkpoint = [&] {
+    const auto started = std::chrono::steady_clock::now();
+    io::write_checkpoint(checkpoint_file, identity, simulation->step_count(), simulation->time(), state.save());
+    checkpoint_tally.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    checkpoint_tally.bytes = std::filesystem::file_size(checkpoint_file);
+    ++checkpoint_tally.written;
+    checkpoints.written(simulation->time());
+  };
   std::filesystem::path last_frame = output_directory;
   try {
     while (simulation->time() < end_time) {
       const StepReport report = simulation->step();
-      run_tally.add(report.time_step.limit);
-      frame_tally.add(report.time_step.limit);
-      run_solves.add(report);
-      frame_solves.add(report);
+      tallies.add(report);
       const double time = simulation->time();
       record_series();
       if (frames.due(time) || time >= end_time) {
         last_frame = writer.write(simulation->fluid(), time, simulation->step_count(),
-                                  frame_attributes(frame_tally, frame_solves));
+                                  frame_attributes(tallies.frame, tallies.frame_solves));
         wall_frames.write(*simulation);
         write_series();
-        frame_tally = {};
-        frame_solves = {};
+        tallies.start_frame();
         frames.advance_past(time);
       }
+      if (checkpoints.active() && (checkpoints.due(time) || time >= end_time)) write_checkpoint();
       progress.update(time, simulation->step_count());
     }
   } catch (const InstabilityError& error) {
@@ -348,12 +384,16 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
     write_series();
     std::cerr << "tide: " << error.what() << "\ntide: the last good frame is " << last_frame.string() << '\n';
     return exit_unstable;
+  } catch (const std::runtime_error& error) {  // a checkpoint that could not be written
+    std::cerr << "tide: " << error.what() << '\n';
+    return exit_failure;
   }
   progress.finish(simulation->time(), simulation->step_count());
   write_series();
 
   const double wall = progress.wall_seconds();
-  const double rate = static_cast<double>(particles) * static_cast<double>(simulation->step_count()) / wall;
+  const std::uint64_t steps_here = simulation->step_count() - first_step;
+  const double rate = static_cast<double>(particles) * static_cast<double>(steps_here) / wall;
   std::printf("run summary: %s\n", scene.source.c_str());
   // A crowd's agents leave through its exits, counted in crowd.csv; a fluid's particles are lost.
   const bool crowd = scene.crowd.has_value();
@@ -365,17 +405,24 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   std::printf("  particles   %zu %s, %zu wall, %zu %s\n", particles, crowd ? "agents at the start" : "fluid",
               simulation->interactions().contact_particle_count(), gone,
               crowd ? "out through the exits" : "removed (left the domain)");
-  std::printf("  steps       %llu, simulated %.4g s\n", static_cast<unsigned long long>(simulation->step_count()),
+  std::printf("  steps       %llu, simulated %.4g s", static_cast<unsigned long long>(simulation->step_count()),
               simulation->time() - scene.time.start);
+  if (first_step > 0) std::printf(" (%llu steps since the resume)", static_cast<unsigned long long>(steps_here));
+  std::printf("\n");
   std::printf("  wall time   %.2f s, %.3g M %s-steps/s (%s x steps / wall time)\n", wall, rate / 1e6,
               crowd ? "agent" : "particle", crowd ? "agents at the start" : "fluid particles");
-  std::printf("  time step   binding limit per step: %s\n", limit_counts(run_tally).c_str());
-  print_solve_summary("density", run_solves.density);
-  print_solve_summary("divergence", run_solves.divergence);
+  std::printf("  time step   binding limit per step: %s\n", limit_counts(tallies.run).c_str());
+  print_solve_summary("density", tallies.run_solves.density);
+  print_solve_summary("divergence", tallies.run_solves.divergence);
   std::printf("  stages      %s\n", format_stage_shares(simulation->pipeline().times()).c_str());
   std::printf("  output      %zu frames, %s\n", writer.frames_written(), writer.xdmf_path().string().c_str());
   for (const auto& recorder : series) {
     std::printf("  series      %zu rows, %s\n", recorder.writer().rows(), recorder.writer().path().string().c_str());
+  }
+  if (checkpoint_tally.written > 0) {
+    std::printf("  checkpoints %zu, %s: %.3g MB, written in %.3g s\n", checkpoint_tally.written,
+                checkpoint_file.string().c_str(), static_cast<double>(checkpoint_tally.bytes) / 1e6,
+                checkpoint_tally.seconds);
   }
   return exit_ok;
 }
@@ -390,7 +437,9 @@ void warn_about(const scene::Scene& scene) {
   }
 }
 
-std::optional<scene::Scene> load(const std::filesystem::path& file) {
+}  // namespace
+
+std::optional<scene::Scene> load_scene(const std::filesystem::path& file) {
   try {
     scene::Scene scene = io::read_scene_file(file);
     check_capabilities(scene);
@@ -402,15 +451,34 @@ std::optional<scene::Scene> load(const std::filesystem::path& file) {
   }
 }
 
-}  // namespace
+std::filesystem::path checkpoint_path(const std::filesystem::path& run_directory) {
+  return run_directory / "checkpoint.h5";
+}
 
 std::filesystem::path run_output_directory(const RunOptions& options) {
+  if (!options.resume.empty()) return options.resume;
   return options.output_directory.empty() ? std::filesystem::path("runs") / options.scene_file.stem()
                                           : options.output_directory;
 }
 
-int run_scene(const RunOptions& options) {
-  std::optional<scene::Scene> scene = load(options.scene_file);
+int run_scene(const RunOptions& given) {
+  RunOptions options = given;
+  if (!options.resume.empty()) {
+    if (!options.output_directory.empty() && options.output_directory != options.resume) {
+      std::cerr << "tide: --resume " << options.resume.string() << " continues the run in that directory; --out "
+                << options.output_directory.string() << " names another\n";
+      return exit_bad_input;
+    }
+    if (options.scene_file.empty()) {
+      try {
+        options.scene_file = io::checkpoint_scene_file(checkpoint_path(options.resume));
+      } catch (const std::runtime_error& error) {
+        std::cerr << "tide: cannot resume: " << error.what() << '\n';
+        return exit_bad_input;
+      }
+    }
+  }
+  std::optional<scene::Scene> scene = load_scene(options.scene_file);
   if (!scene) return exit_bad_input;
   if (options.until) {
     if (!(*options.until > scene->time.start)) {
@@ -425,7 +493,7 @@ int run_scene(const RunOptions& options) {
 }
 
 int check_scene(const std::filesystem::path& scene_file) {
-  const std::optional<scene::Scene> scene = load(scene_file);
+  const std::optional<scene::Scene> scene = load_scene(scene_file);
   if (!scene) return exit_bad_input;
   try {
     auto report = [&](const auto& simulation) {

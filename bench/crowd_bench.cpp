@@ -86,14 +86,16 @@ void crowd_steps(benchmark::State& state, std::size_t agents, int threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  for (const std::size_t agents : {10'000, 100'000}) {
+  for (const std::size_t agents : {10'000, 100'000, 1'000'000}) {
     for (const int threads : {1, 2}) {
       const std::string name =
           "BM_CrowdStep/N:" + std::to_string(agents) + "/threads:" + std::to_string(threads) + "/" + TIDE_REAL_NAME;
       benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) { crowd_steps(state, agents, threads); })
           ->UseRealTime()
           ->Unit(benchmark::kMillisecond)
-          ->Iterations(agents >= 100'000 ? 20 : 200);
+          ->Iterations(agents >= 1'000'000 ? 5
+                       : agents >= 100'000 ? 20
+                                           : 200);
     }
   }
   benchmark::Initialize(&argc, argv);

@@ -70,6 +70,16 @@ std::size_t ParticleSet<D>::append(std::size_t count) {
 }
 
 template <int D>
+void ParticleSet<D>::resize(std::size_t count, Index next_id) {
+  if (count > std::numeric_limits<Index>::max())
+    throw std::length_error("a particle set holds at most 2^32 - 1 particles");
+  size_ = count;
+  next_id_ = next_id;
+  for (auto& values : reals_) values.resize(size_, Real(0));
+  for (auto& values : indices_) values.resize(size_, Index(0));
+}
+
+template <int D>
 const FieldInfo* ParticleSet<D>::find(std::string_view name) const {
   const auto it = std::find_if(fields_.begin(), fields_.end(), [&](const FieldInfo& f) { return f.name == name; });
   return it == fields_.end() ? nullptr : &*it;

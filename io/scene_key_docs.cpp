@@ -22,6 +22,7 @@ std::vector<SectionDoc> section_docs() {
       section_doc("walls.obstacles[i].motion.oscillation", oscillation_keys()),
       section_doc("walls.obstacles[i].motion.flap", flap_keys()),
       section_doc("walls.obstacles[i].motion.table", motion_table_keys()),
+      section_doc("walls.obstacles[i].motion.steered", steered_keys()),
       section_doc("walls.obstacles[i].body", body_keys()),
       section_doc("walls.obstacles[i].body.constraints", body_constraint_keys()),
       section_doc("domain", domain_keys()),

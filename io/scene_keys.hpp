@@ -93,6 +93,7 @@ std::span<const Key<scene::Rotation>> rotation_motion_keys();
 std::span<const Key<scene::Oscillation>> oscillation_keys();
 std::span<const Key<scene::FlapOscillation>> flap_keys();
 std::span<const Key<scene::MotionTable>> motion_table_keys();
+std::span<const Key<scene::Steered>> steered_keys();
 std::span<const Key<scene::Body>> body_keys();
 /// A rotation axis: 3D scenes give it (any length but zero; it is normalised), 2D scenes turn
 /// about z and may not (`refusal_in_2d` says so).

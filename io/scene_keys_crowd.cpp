@@ -5,6 +5,7 @@
 #include <string>
 
 #include "scene_keys.hpp"
+#include "scene_names.hpp"
 #include "scene_sections.hpp"
 #include "scene_shapes.hpp"
 
@@ -44,7 +45,7 @@ void read_exits(const ValueReader& values, const Node& node, scene::Crowd& crowd
 }  // namespace
 
 std::span<const Key<scene::Crowd>> crowd_keys() {
-  static constexpr std::array<Key<scene::Crowd>, 14> keys{{
+  static constexpr std::array<Key<scene::Crowd>, 16> keys{{
       {"agents", "non-empty array of objects", "–", "", "Where the agents stand at the start.", Presence::required,
        read_agent_groups},
       {"exits", "array of objects, not empty unless every group has a `heading`", "–", "none",
@@ -87,6 +88,19 @@ std::span<const Key<scene::Crowd>> crowd_keys() {
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
          crowd.agent_length = values.number(value, positive);
        }},
+      {"steering_strength", "number ≥ 0", "", "`8`",
+       "a: the walking direction is the desired one plus Σ_j a exp((ℓ − s_ij)/D) away from each agent j s_ij "
+       "away, normalised (the direction model of Tordeux, Chraibi & Seyfried 2016, eq. 5); 0 walks straight "
+       "toward the goal ([crowds.md](crowds.md#parameters)).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
+         crowd.steering_strength = values.number(value, non_negative);
+       }},
+      {"steering_range", "number > 0", "m", "`0.1`", "D: the range of that turning away from the agents close by.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
+         crowd.steering_range = values.number(value, positive);
+       }},
       {"agent_mass", "number > 0", "kg", "`80`", "m of the body forces (Helbing, Farkas & Vicsek 2000).",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
@@ -127,9 +141,8 @@ std::span<const Key<scene::Crowd>> crowd_keys() {
 }
 
 std::span<const Key<scene::AgentGroup>> crowd_agent_keys() {
-  static constexpr std::array<Key<scene::AgentGroup>, 3> keys{{
-      {"region", "[box](#box)", "m", "", "The agents stand on a square lattice centred in this box.",
-       Presence::required,
+  static constexpr std::array<Key<scene::AgentGroup>, 4> keys{{
+      {"region", "[box](#box)", "m", "", "Where the agents stand at the start (`placement`).", Presence::required,
        [](const ValueReader& values, const Node& value, scene::AgentGroup& group) {
          group.region = read_box(values, value);
        }},
@@ -145,6 +158,14 @@ std::span<const Key<scene::AgentGroup>> crowd_agent_keys() {
          const double norm = std::hypot(v[0], v[1], v[2]);
          if (!(norm > 0) || !std::isfinite(norm)) values.fail(value, "a non-zero vector");
          group.heading = scene::Vec{v[0] / norm, v[1] / norm, v[2] / norm};
+       }},
+      {"placement", "`lattice` or `random`", "–", "`lattice`",
+       "`lattice`: a square lattice centred in the region (a hexagonal one where too dense for it); `random`: "
+       "uniformly at random, a body diameter or more apart (random sequential addition, seeded by "
+       "`desired_speed.seed`; up to about 2.5 persons/m²). [crowds.md](crowds.md#model)",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::AgentGroup& group) {
+         group.placement = values.choice(value, agent_placement_names);
        }},
   }};
   return keys;

@@ -121,9 +121,21 @@ std::span<const Key<scene::MotionTable>> motion_table_keys() {
   return keys;
 }
 
+std::span<const Key<scene::Steered>> steered_keys() {
+  static constexpr std::array<Key<scene::Steered>, 1> keys{{
+      {"max_speed", "number > 0", "m/s", "`1`", "The fastest the solid follows where it is steered.",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Steered& steered) {
+         steered.max_speed = values.number(value, positive);
+       }},
+  }};
+  return keys;
+}
+
 scene::Motion read_motion(const ValueReader& values, const Node& node) {
-  values.expect_object(node, std::array<std::string_view, 4>{"rotation", "oscillation", "flap", "table"});
-  const std::string_view law = one_key_of(values, node, {"rotation", "oscillation", "flap", "table"}, "motion key");
+  values.expect_object(node, std::array<std::string_view, 5>{"rotation", "oscillation", "flap", "table", "steered"});
+  const std::string_view law =
+      one_key_of(values, node, {"rotation", "oscillation", "flap", "table", "steered"}, "motion key");
   const Node value = child(node, law);
   if (law == "rotation") {
     scene::Rotation rotation;
@@ -139,6 +151,11 @@ scene::Motion read_motion(const ValueReader& values, const Node& node) {
     scene::FlapOscillation flap;
     read_section(values, value, flap_keys(), flap);
     return flap;
+  }
+  if (law == "steered") {
+    scene::Steered steered;
+    read_section(values, value, steered_keys(), steered);
+    return steered;
   }
   scene::MotionTable table;
   read_section(values, value, motion_table_keys(), table);

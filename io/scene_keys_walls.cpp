@@ -117,9 +117,9 @@ std::span<const Key<scene::Obstacle>> obstacle_keys() {
        [](const ValueReader& values, const Node& value, scene::Obstacle& obstacle) {
          obstacle.slip = values.choice(value, wall_slip_names);
        }},
-      {"motion", "object: `rotation`, `oscillation`, `flap` or `table`", "–", "none",
-       "A prescribed rigid motion (docs/bodies.md); its particles move, with the motion's velocity as the surface "
-       "velocity. Not with `velocity`.",
+      {"motion", "object: `rotation`, `oscillation`, `flap`, `table` or `steered`", "–", "none",
+       "A prescribed rigid motion (docs/bodies.md), or one the running program steers (`steered`: tide serve's "
+       "pointer); its particles move, with the motion's velocity as the surface velocity. Not with `velocity`.",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Obstacle& obstacle) {
          if (obstacle.velocity != scene::Vec{})

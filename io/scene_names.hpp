@@ -39,6 +39,8 @@ inline constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
     {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
 /// A mesh file's length unit, in metres.
 inline constexpr std::array<Named<double>, 3> mesh_unit_names{{{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}}};
+inline constexpr std::array<Named<scene::AgentPlacement>, 2> agent_placement_names{
+    {{"lattice", scene::AgentPlacement::lattice}, {"random", scene::AgentPlacement::random}}};
 inline constexpr std::array<Named<scene::ProbeType>, 2> probe_type_names{
     {{"pressure", scene::ProbeType::pressure}, {"water_height", scene::ProbeType::water_height}}};
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The full test job (CI runs it through .ci/run): installs the Debian packages, checks that
 # every C++ source is formatted by the repository's .clang-format, then
-#   1. builds everything with -Werror in double precision (build/) and runs every test;
+#   1. builds everything with -Werror in double precision (build/) and runs every test, the
+#      browser test of tide serve among them (npm ci installs its playwright-core first);
 #   2. builds and runs the tests in single precision (build-float/);
 #   3. installs the double build and builds + runs examples/embed against the installed package;
 #   4. builds the unit tests (target tide_unit_tests) with AddressSanitizer +
@@ -23,7 +24,11 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
 section "Dependencies"
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh --browser
+
+section "Browser test: playwright-core (npm ci, package-lock.json)"
+# tests/browser/serve_test.mjs drives Debian's chromium with it; ctest runs it with the double build.
+npm ci --no-audit --no-fund
 
 section "Formatting (clang-format, .clang-format)"
 git ls-files -z '*.cpp' '*.hpp' | xargs -0 clang-format --dry-run --Werror

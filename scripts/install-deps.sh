@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 (bookworm) packages TideSPH needs to build, test and benchmark.
-# Idempotent and quiet: when every package is present it changes nothing and needs no root.
+# Installs the Debian 12 (bookworm) packages TideSPH needs to build, test and benchmark; with
+# --browser also what the browser test of tide serve needs (node, npm, chromium), which the main
+# job does not. Idempotent and quiet: when every package is present it changes nothing and needs
+# no root.
 set -euo pipefail
 
 packages=(
@@ -10,6 +12,7 @@ packages=(
   libtinyobjloader-dev           # io: Wavefront OBJ meshes
   libpng-dev                     # render: PNG frames
   libcli11-dev                   # apps: the tide command line
+  libcivetweb-dev civetweb       # serve: tide serve's HTTP + WebSocket server (its CMake config needs both)
   libgtest-dev libbenchmark-dev  # tests/, bench/
   clang clang-format             # second compiler, formatting
   libclang-rt-14-dev             # sanitizer runtimes and libFuzzer for clang
@@ -26,13 +29,27 @@ has_candidate() {
   [[ -n "$candidate" && "$candidate" != "(none)" ]]
 }
 
+# The browser test of tide serve (tests/browser/serve_test.mjs): node and npm, unless a Node.js
+# is already there (it brings its own npm), and Debian's chromium. Chromium is optional: where it
+# cannot be installed the browser test is skipped with the reason.
+browser_packages=()
+if [[ "${1:-}" == "--browser" ]]; then
+  command -v node >/dev/null 2>&1 && command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
+  installed chromium || browser_packages+=(chromium)
+fi
+
 missing=()
 for package in "${packages[@]}"; do
   installed "$package" || missing+=("$package")
 done
 
-if ((${#missing[@]} == 0)); then
+if ((${#missing[@]} == 0 && ${#browser_packages[@]} == 0)); then
   echo "install-deps: all ${#packages[@]} packages are installed"
+  exit 0
+fi
+
+if ((${#missing[@]} == 0 && EUID != 0)); then
+  echo "install-deps: chromium is not installed (as root this script installs it); the browser test will be skipped"
   exit 0
 fi
 
@@ -56,13 +73,23 @@ apt_get() {
 
 # Refresh the package lists only when one of the missing packages has no candidate in them
 # (a fresh image ships without lists); otherwise install from the lists at hand.
-for package in "${missing[@]}"; do
+for package in "${missing[@]}" "${browser_packages[@]}"; do
   if ! has_candidate "$package"; then
     echo "install-deps: updating the package lists"
     apt_get update
     break
   fi
 done
+
+if ((${#browser_packages[@]} != 0)); then
+  echo "install-deps: installing ${browser_packages[*]} (optional: the browser test)"
+  apt_get install -y --no-install-recommends "${browser_packages[@]}" ||
+    echo "install-deps: could not install ${browser_packages[*]}; the browser test will be skipped"
+fi
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: done"
+  exit 0
+fi
 
 echo "install-deps: installing ${missing[*]}"
 if ! apt_get install -y --no-install-recommends "${missing[@]}"; then

@@ -167,6 +167,26 @@ IncompressibleSph<D>::IncompressibleSph(const scene::Scene& scene)
 }
 
 template <int D>
+bool IncompressibleSph<D>::steer(const Eigen::Vector3d& displacement) {
+  return moving_walls_.steer(displacement, static_cast<Real>(scene_.particle_spacing));
+}
+
+template <int D>
+bool IncompressibleSph<D>::set_gravity(const Vector<D>& gravity) {
+  for (int d = 0; d < D; ++d) scene_.gravity[d] = static_cast<double>(gravity[d]);
+  gravity_ = setup::gravity_at<D>(scene_, time_);
+  return true;
+}
+
+template <int D>
+bool IncompressibleSph<D>::set_kinematic_viscosity(Real viscosity) {
+  if (phases_ || scene_.solver.viscosity != scene::ViscosityModel::laminar) return false;
+  kinematic_viscosity_ = viscosity;
+  time_step_rule_.kinematic_viscosity = viscosity;
+  return true;
+}
+
+template <int D>
 Pipeline IncompressibleSph<D>::build_pipeline() {
   std::vector<Stage> stages;
   stages.push_back({"predict_velocity", [this](StepContext& c) { predict_velocity(c.dt); }});

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <stdexcept>
+#include <string>
 
 #include "tide/solvers/rigid_motion.hpp"
 
@@ -99,6 +100,25 @@ RigidBody::Point RigidBody::Kinematics::point(const Eigen::Vector3d& start) cons
 
 double RigidBody::kinetic_energy() const {
   return properties_.mass * velocity_.squaredNorm() / 2 + angular_velocity().dot(angular_momentum_) / 2;
+}
+
+std::vector<double> RigidBody::motion_state() const {
+  std::vector<double> state;
+  for (const Eigen::Vector3d* v : {&reference_, &velocity_, &angular_momentum_, &acceleration_, &angular_acceleration_})
+    state.insert(state.end(), v->data(), v->data() + 3);
+  state.insert(state.end(), {orientation_.w(), orientation_.x(), orientation_.y(), orientation_.z()});
+  return state;
+}
+
+void RigidBody::restore_motion_state(std::span<const double> state) {
+  if (state.size() != 19)
+    throw std::invalid_argument("a rigid body's motion is 19 numbers, got " + std::to_string(state.size()));
+  std::size_t k = 0;
+  for (Eigen::Vector3d* v : {&reference_, &velocity_, &angular_momentum_, &acceleration_, &angular_acceleration_}) {
+    *v = Eigen::Vector3d(state[k], state[k + 1], state[k + 2]);
+    k += 3;
+  }
+  orientation_ = Eigen::Quaterniond(state[k], state[k + 1], state[k + 2], state[k + 3]);
 }
 
 }  // namespace tide

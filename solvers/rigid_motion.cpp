@@ -108,6 +108,7 @@ RigidPose pose_at(const scene::Motion& motion, double tau) {
         if constexpr (std::is_same_v<Law, scene::Oscillation>) return oscillation_pose(law, tau);
         if constexpr (std::is_same_v<Law, scene::FlapOscillation>) return flap_pose(law, tau);
         if constexpr (std::is_same_v<Law, scene::MotionTable>) return table_pose(law, tau);
+        if constexpr (std::is_same_v<Law, scene::Steered>) return RigidPose{};  // until steered (MovingWalls)
       },
       motion);
 }

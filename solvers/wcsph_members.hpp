@@ -178,6 +178,25 @@ Vector<D> Wcsph<D>::step_gravity(const StepContext& context) const {
 }
 
 template <int D>
+bool Wcsph<D>::steer(const Eigen::Vector3d& displacement) {
+  return moving_walls_.steer(displacement, static_cast<Real>(scene_.particle_spacing));
+}
+
+template <int D>
+bool Wcsph<D>::set_gravity(const Vector<D>& gravity) {
+  for (int d = 0; d < D; ++d) scene_.gravity[d] = static_cast<double>(gravity[d]);
+  return true;
+}
+
+template <int D>
+bool Wcsph<D>::set_kinematic_viscosity(Real viscosity) {
+  if (phases_ || scene_.solver.viscosity != scene::ViscosityModel::laminar) return false;
+  kinematic_viscosity_ = viscosity;
+  time_step_rule_.kinematic_viscosity = viscosity;
+  return true;
+}
+
+template <int D>
 Vector<D> Wcsph<D>::gravity() const {
   return setup::gravity_at<D>(scene_, time_);
 }

@@ -193,14 +193,9 @@ TEST(AgentPlacement, DesiredSpeedsFollowTheirDistribution) {
   for (const Real v : a) EXPECT_LE(std::abs(v - 1.34), 3 * 0.26 + 1e-6);
 }
 
-// 272 agents in the 20 m × 3.4 m band of a corridor, 3.4 persons/m² of it: more than a square
-// lattice holds a body diameter apart (0.486 m), so a hexagonal one, 0.506 m apart, every
-// agent inside the region and no two closer than a body diameter, across the periodic x too.
-TEST(AgentPlacement, TooDenseForASquareLatticeStandsOnAHexagonalOne) {
-  const scene::Scene corridor = test::crowd_corridor(272, 20, 4, 1);
-  const AgentStarts starts = place_agents(corridor);
-  ASSERT_EQ(starts.positions.size(), 272U);
-  const scene::Box& region = corridor.crowd->agents[0].region;
+// The closest two agents of `starts`, across the periodic x of a corridor `length` long, after
+// checking that each stands inside `region`.
+double closest_pair_inside(const AgentStarts& starts, const scene::Box& region, double length) {
   double closest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < starts.positions.size(); ++i) {
     const Vector<2> p = starts.positions[i];
@@ -210,12 +205,67 @@ TEST(AgentPlacement, TooDenseForASquareLatticeStandsOnAHexagonalOne) {
     EXPECT_LE(p[1], region.max[1]) << i;
     for (std::size_t j = 0; j < i; ++j) {
       Vector<2> d = p - starts.positions[j];
-      d[0] -= static_cast<Real>(20 * std::round(static_cast<double>(d[0]) / 20));
+      d[0] -= static_cast<Real>(length * std::round(static_cast<double>(d[0]) / length));
       closest = std::min(closest, static_cast<double>(d.norm()));
     }
   }
+  return closest;
+}
+
+// 272 agents in the 20 m × 3.4 m band of a corridor, 3.4 persons/m² of it: more than a square
+// lattice holds a body diameter apart (0.486 m), so a hexagonal one, 0.506 m apart, every
+// agent inside the region and no two closer than a body diameter, across the periodic x too.
+TEST(AgentPlacement, TooDenseForASquareLatticeStandsOnAHexagonalOne) {
+  const scene::Scene corridor = test::crowd_corridor(272, 20, 4, 1);
+  const AgentStarts starts = place_agents(corridor);
+  ASSERT_EQ(starts.positions.size(), 272U);
   // Measured: 0.50633 m, the spacing; bound: a body diameter.
-  EXPECT_GE(closest, 0.5 - 1e-6);
+  EXPECT_GE(closest_pair_inside(starts, corridor.crowd->agents[0].region, 20), 0.5 - 1e-6);
+}
+
+// Random placement (random sequential addition) of 160 agents, 2.35 persons/m² of the band:
+// inside the region, no two closer than a body diameter across the periodic x, the same places
+// from the same seed and other places from another, and spread evenly along the corridor.
+TEST(AgentPlacement, RandomPlacementKeepsBodiesApartAndFollowsItsSeed) {
+  scene::Scene corridor = test::crowd_corridor(160, 20, 4, 1, "random");
+  const AgentStarts starts = place_agents(corridor);
+  ASSERT_EQ(starts.positions.size(), 160U);
+  EXPECT_GE(closest_pair_inside(starts, corridor.crowd->agents[0].region, 20), 0.5);
+  EXPECT_EQ(place_agents(corridor).positions, starts.positions);
+  corridor.crowd->desired_speed.seed = 2;
+  EXPECT_NE(place_agents(corridor).positions, starts.positions);
+  // Along the periodic x every place is alike: the mean of 160 uniform draws on [0, 20] m lies
+  // within 3 standard errors (20/sqrt(12 · 160) = 0.456 m) of 10 m.
+  double mean_x = 0;
+  for (const Vector<2>& p : starts.positions) mean_x += static_cast<double>(p[0]) / 160;
+  EXPECT_NEAR(mean_x, 10, 3 * 0.456);
+}
+
+// Two groups in the same band, one on the lattice and one at random, then another at random:
+// every agent a body diameter or more from every other, whichever group it belongs to.
+TEST(AgentPlacement, GroupsPlacedAtRandomKeepClearOfTheGroupsBeforeThem) {
+  scene::Scene corridor = test::crowd_corridor(40, 20, 4, 1, "lattice");
+  scene::AgentGroup second = corridor.crowd->agents[0];
+  second.placement = scene::AgentPlacement::random;
+  second.heading = scene::Vec{-1, 0, 0};
+  corridor.crowd->agents.push_back(second);
+  corridor.crowd->agents.push_back(second);
+  const AgentStarts starts = place_agents(corridor);
+  ASSERT_EQ(starts.positions.size(), 120U);
+  EXPECT_GE(closest_pair_inside(starts, corridor.crowd->agents[0].region, 20), 0.5);
+}
+
+// 200 agents in that band, 2.9 persons/m² of it, past where random sequential addition jams:
+// refused at the group's count, naming the lattice that holds them.
+TEST(AgentPlacement, RandomPlacementTooDenseIsRefusedAtTheCount) {
+  const scene::Scene corridor = test::crowd_corridor(200, 20, 4, 1, "random");
+  try {
+    place_agents(corridor);
+    FAIL() << "200 agents placed at random";
+  } catch (const scene::SceneError& error) {
+    EXPECT_EQ(error.key_path(), "/crowd/agents/0/count");
+    EXPECT_NE(std::string(error.what()).find("lattice"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

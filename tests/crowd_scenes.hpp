@@ -48,12 +48,14 @@ inline std::string crowd_room_json(const CrowdRoom& room) {
 inline scene::Scene crowd_room(const CrowdRoom& room) { return io::parse_scene(crowd_room_json(room), "crowd_room"); }
 
 /// A corridor periodic along x, `length` × `width` inside walls 0.3 m thick below and above,
-/// `count` agents spread over it (a body radius and a half spacing from the walls) walking along +x.
-inline scene::Scene crowd_corridor(std::size_t count, double length, double width, double end) {
+/// `count` agents spread over it (a body radius and a half spacing from the walls) walking along +x,
+/// placed as `placement` ("lattice" or "random") says.
+inline scene::Scene crowd_corridor(std::size_t count, double length, double width, double end,
+                                   const std::string& placement = "lattice") {
   std::ostringstream json;
   json << R"({"dimension": 2, "particle_spacing": 0.1, "kernel": {"type": "wendland_c2", "smoothing_ratio": 5},)"
        << R"("crowd": {"agents": [{"region": {"min": [0, 0.3], "max": [)" << length << ", " << width - 0.3
-       << R"(]}, "count": )" << count << R"(, "heading": [1, 0]}]}, )"
+       << R"(]}, "count": )" << count << R"(, "heading": [1, 0], "placement": ")" << placement << R"("}]}, )"
        << R"("walls": {"obstacles": [{"box": {"min": [0, -0.3], "max": [)" << length << R"(, 0]}}, )"
        << R"({"box": {"min": [0, )" << width << R"(], "max": [)" << length << ", " << width + 0.3 << "]}}]}, "
        << R"("domain": {"min": [0, -0.5], "max": [)" << length << ", " << width + 0.5

@@ -76,6 +76,27 @@ TEST_F(RenderCommand, SurfaceOfAThreeDimensionalRunIsDrawn) {
   EXPECT_NE(flat.output.find("--surface draws the surfaces of 3D runs"), std::string::npos) << flat.output;
 }
 
+// --heatmap colours the whole floor of a 2D run by its points' density: every pixel of the plot
+// region coloured (the empty floor at the scale's bottom), a colour bar; refused for a 3D run.
+TEST_F(RenderCommand, HeatmapOfATwoDimensionalRunColoursTheFloor) {
+  const fs::path run = write_run<2>(1);
+  const CommandResult result = run_tide("render --heatmap --size 640x360 " + run.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("density heat map"), std::string::npos) << result.output;
+  const render::Image image = testing_support::read_png(run / "render" / "frame_000000.png");
+  const render::Colormap viridis("viridis");
+  int floor = 0, crowded = 0;
+  for (const render::Colour& pixel : image.pixels) {
+    floor += pixel == viridis.at(0);
+    crowded += pixel != viridis.at(0) && pixel != render::Colour{0xff, 0xff, 0xff};
+  }
+  EXPECT_GT(floor, 1000);
+  EXPECT_GT(crowded, 1000);
+  const CommandResult solid = run_tide("render --heatmap " + write_run<3>(1).string());
+  EXPECT_EQ(solid.exit_code, 2) << solid.output;
+  EXPECT_NE(solid.output.find("--heatmap draws the density of a 2D run"), std::string::npos) << solid.output;
+}
+
 TEST_F(RenderCommand, BadOptionsAreRefused) {
   const fs::path run = write_run<2>(1);
   for (const auto& [options, message] : std::vector<std::pair<std::string, std::string>>{

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -12,6 +13,7 @@
 #include "tide/render/bitmap_font.hpp"
 #include "tide/render/camera.hpp"
 #include "tide/render/colormap.hpp"
+#include "tide/render/density_heatmap.hpp"
 #include "tide/render/mesh_shading.hpp"
 #include "tide/render/particle_splats.hpp"
 #include "tide/render/png_file.hpp"
@@ -85,6 +87,27 @@ TEST(ParticleSplats, TwoDimensionalParticleIsADiscOfItsRadius) {
   const double radius = 20 / camera.pixels_per_metre;
   draw_particles(image, camera, 2, position, value, scale, radius);
   EXPECT_NEAR(count_pixels(image, scale.of(1.0)), std::numbers::pi * 400, 0.03 * std::numbers::pi * 400);
+}
+
+// One point's density heat map is its kernel: W(0) = 7/(4π h²) at its pixel, and the sum over
+// the pixels times a pixel's area is the kernel's integral, 1 (the point counts once), to the
+// error of sampling the kernel at pixel centres (0.2% here, h = 10 pixels).
+TEST(DensityHeatmap, OnePointIsItsKernelAndCountsOnce) {
+  const Camera camera = camera_2d({-1, -1, 0}, {1, 1, 0}, {0, 0, 200, 200});
+  const double h = 10 / camera.pixels_per_metre;
+  const std::vector<double> position = {0.0, 0.0};
+  const std::vector<double> density = density_on_pixels(camera, position, h);
+  ASSERT_EQ(density.size(), 200U * 200U);
+  double total = 0, peak = 0;
+  for (const double n : density) {
+    total += n;
+    peak = std::max(peak, n);
+  }
+  const double pixel_area = 1 / (camera.pixels_per_metre * camera.pixels_per_metre);
+  EXPECT_NEAR(total * pixel_area, 1, 0.005);
+  // The point sits on a pixel corner: its four nearest pixel centres are half a pixel away on each axis.
+  const double w0 = 7 / (4 * std::numbers::pi * h * h);
+  EXPECT_NEAR(peak, w0, 0.02 * w0);
 }
 
 // In 3D the nearer sphere hides the farther one whichever is drawn first.

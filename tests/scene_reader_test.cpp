@@ -335,6 +335,13 @@ TEST(SceneReader, ReadsAnObstaclesMotion) {
   const json flap = {{"flap", {{"hinge", {0.8, 0}}, {"amplitude", 0.1}, {"frequency", 0.5}}}};
   s = parse(with(full_2d_scene(), "/walls/obstacles/0/motion", flap));
   EXPECT_EQ(std::get<scene::FlapOscillation>(*s.walls.obstacles[0].motion).hinge, vec(0.8, 0));
+
+  s = parse(with(full_2d_scene(), "/walls/obstacles/0/motion", json{{"steered", {{"max_speed", 1.5}}}}));
+  EXPECT_EQ(std::get<scene::Steered>(*s.walls.obstacles[0].motion).max_speed, 1.5);
+  s = parse(with(full_2d_scene(), "/walls/obstacles/0/motion", json{{"steered", json::object()}}));
+  EXPECT_EQ(std::get<scene::Steered>(*s.walls.obstacles[0].motion).max_speed, 1) << "the default";
+  expect_refused(with(full_2d_scene(), "/walls/obstacles/0/motion", json{{"steered", {{"max_speed", 0}}}}),
+                 "/walls/obstacles/0/motion/steered/max_speed", "a number > 0");
 }
 
 TEST(SceneReader, RefusesBadMotions) {

@@ -21,6 +21,17 @@ inline scene::Scene small_dam_break_2d() {
   return s;
 }
 
+// The small dam break with a 12 × 3 cm paddle in its path, turning about its centre at 8 rad/s
+// after a 0.05 s ramp (a moving wall contact).
+inline scene::Scene small_dam_break_with_paddle_2d() {
+  scene::Scene s = small_dam_break_2d();
+  scene::Obstacle paddle;
+  paddle.shape = scene::Box{{0.34, 0.08, 0}, {0.46, 0.11, 0}};
+  paddle.motion = scene::Rotation{{0.4, 0.095, 0}, {0, 0, 1}, 8.0, 0.05};
+  s.walls.obstacles.push_back(paddle);
+  return s;
+}
+
 // A fully periodic 0.6 × 0.4 m box of water without walls or gravity, Δx = 2 cm, h = 1.7 Δx.
 inline scene::Scene periodic_box_2d() {
   scene::Scene s;

@@ -197,16 +197,33 @@ TEST(ThreadDeterminism, DamBreakIntoATurningPaddleIsBitwiseIdentical) {
     SCOPED_TRACE(static_cast<int>(scheme));
     const auto state = [scheme](int threads) {
       const ThreadLimit limit(threads);
-      scene::Scene s = small_dam_break_2d();
+      scene::Scene s = small_dam_break_with_paddle_2d();
       s.solver.scheme = scheme;
-      scene::Obstacle paddle;
-      paddle.shape = scene::Box{{0.34, 0.08, 0}, {0.46, 0.11, 0}};
-      paddle.motion = scene::Rotation{{0.4, 0.095, 0}, {0, 0, 1}, 8.0, 0.05};
-      s.walls.obstacles.push_back(paddle);
       return state_after_steps(*make_simulation<2>(s), 200);
     };
     EXPECT_TRUE(same_bytes(state(1), state(2)));
   }
+}
+
+// A disc steered (tide serve's dragged obstacle, Simulation::steer) into the dam break's surge, with
+// gravity turned and the viscosity changed on the way, under DFSPH.
+TEST(ThreadDeterminism, DamBreakWithASteeredDiscAndLiveChangesIsBitwiseIdentical) {
+  const auto state = [](int threads) {
+    const ThreadLimit limit(threads);
+    scene::Scene s = small_dam_break_2d();
+    s.solver.scheme = scene::Scheme::dfsph;
+    s.solver.viscosity = scene::ViscosityModel::laminar;
+    scene::Obstacle disc;
+    disc.shape = scene::Ball{{0.4, 0.15, 0}, 0.03};
+    disc.motion = scene::Steered{1.0};
+    s.walls.obstacles.push_back(disc);
+    const auto simulation = make_simulation<2>(s);
+    simulation->steer({-0.2, -0.1, 0});
+    simulation->set_gravity(Vector<2>(2, -9.81));
+    simulation->set_kinematic_viscosity(Real(1e-3));
+    return state_after_steps(*simulation, 200);
+  };
+  EXPECT_TRUE(same_bytes(state(1), state(2)));
 }
 
 // The dam break carries a light box from inside its column (a rigid body: the body-force pass and the

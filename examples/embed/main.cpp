@@ -1,10 +1,12 @@
 // Embeds TideSPH through its installed CMake package: fills a cube of water with a particle
-// lattice and checks its mass and centroid against the values the geometry implies.
+// lattice and checks its mass and centroid against the values the geometry implies, then runs a
+// checkpoint round trip (checkpoint_round_trip.cpp).
 
 #include <cstddef>
 #include <cstdio>
 #include <functional>
 
+#include "checkpoint_round_trip.hpp"
 #include "tide/core/config.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -54,7 +56,10 @@ int main() {
   std::printf("  centroid  (%.9g, %.9g, %.9g) m (expected %.9g on each axis)\n", double(centroid.x()),
               double(centroid.y()), double(centroid.z()), double(expected_centroid.x()));
 
-  const bool ok = total_mass == expected_mass && centroid == expected_centroid;
-  std::printf("%s\n", ok ? "OK" : "MISMATCH: the installed TideSPH computes a wrong mass or centroid");
-  return ok ? 0 : 1;
+  const bool lattice_ok = total_mass == expected_mass && centroid == expected_centroid;
+  if (!lattice_ok) std::printf("MISMATCH: the installed TideSPH computes a wrong mass or centroid\n");
+  const bool resume_ok = checkpoint_round_trip();
+  if (!resume_ok) std::printf("MISMATCH: a run resumed from its checkpoint differs from the straight run\n");
+  if (lattice_ok && resume_ok) std::printf("OK\n");
+  return lattice_ok && resume_ok ? 0 : 1;
 }

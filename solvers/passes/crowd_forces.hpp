@@ -27,6 +27,8 @@ struct CrowdForceSettings {
   Real wall_offset;         // Δx/2: from a wall's outermost particle to its surface
   Real time_gap;            // T of the speed from the space ahead
   Real agent_length;        // ℓ: the headway at which that speed is zero
+  Real steering_strength;   // a of the direction model
+  Real steering_range;      // D of the direction model
 
   static CrowdForceSettings of(const scene::Scene& scene) {
     const scene::Crowd& c = *scene.crowd;
@@ -38,7 +40,9 @@ struct CrowdForceSettings {
             static_cast<Real>(c.body_stiffness),
             static_cast<Real>(scene.particle_spacing / 2),
             static_cast<Real>(c.time_gap),
-            static_cast<Real>(c.agent_length)};
+            static_cast<Real>(c.agent_length),
+            static_cast<Real>(c.steering_strength),
+            static_cast<Real>(c.steering_range)};
   }
 
   /// The speed an agent whose nearest agent ahead stands `headway` away walks at most:
@@ -47,6 +51,12 @@ struct CrowdForceSettings {
   /// al. 2005 (eq. 3, d = a + b v) solved for v.
   Real headway_speed(Real desired, Real headway) const {
     return std::min(desired, std::max((headway - agent_length) / time_gap, Real(0)));
+  }
+
+  /// How strongly an agent `distance` away turns one's walking direction away from it:
+  /// R(s) = a exp((ℓ − s)/D) (Tordeux, Chraibi & Seyfried 2016, eq. 5).
+  Real steering(Real distance) const {
+    return steering_strength * std::exp((agent_length - distance) / steering_range);
   }
 
   /// The distance within which an agent ahead can slow one of desired speed at most
@@ -66,9 +76,10 @@ struct CrowdForceSettings {
 ///       the headway s_i allows, Tordeux, Chraibi & Seyfried 2016, eqs. 3-4)
 ///       − Σ_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij (Monaghan 1992, eq. 3.3, with m_j = 1 person)
 ///       + Σ_j f(|x_ij| − 2r) x_ij/|x_ij| + f(d_iW − r) n_iW (Helbing, Farkas & Vicsek 2000, eqs. 2, 3)
-/// with e_i = direction(i, x_i), the agent's desired direction, and d_iW, n_iW the distance to
-/// and the normal from the nearest wall surface, taken from the nearest wall particle of each
-/// wall contact.
+/// with e_i the walking direction: the desired direction e0_i = direction(i, x_i) turned away from
+/// the agents close by, e_i ∝ e0_i + Σ_j R(|x_ij|) x_ij/|x_ij| (Tordeux, Chraibi & Seyfried 2016,
+/// eq. 5), and d_iW, n_iW the distance to and the normal from the nearest wall surface, taken
+/// from the nearest wall particle of each wall contact.
 template <class Direction>
 void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings& settings, const Direction& direction,
                         const ParticleSet<2>& agents, const FluidFields<2>& f, ScalarField desired_speed,
@@ -80,20 +91,27 @@ void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings
   const auto v0 = agents[desired_speed];
   const Real contact_distance = 2 * settings.body_radius;
   for_each_fluid_particle<2>(interactions, x, VectorOutput<2>{acceleration}, [&](std::size_t i, const auto& neighbors) {
-    const Vector<2> e = direction(i, x[i]);
-    const Vector<2> across(-e[1], e[0]);
     Vector<2> a = Vector<2>::Zero();
-    Real headway2 = std::numeric_limits<Real>::infinity();
+    const Vector<2> desired = direction(i, x[i]);
+    Vector<2> turned = desired;
     const Real p_over_rho2 = p[i] / (rho[i] * rho[i]);
     neighbors.fluid_pairs([&](std::size_t j, const Vector<2>& x_ij, Real r2) {
       if (!(r2 > 0)) return;
       const Real r = std::sqrt(r2);
       a -= (p_over_rho2 + p[j] / (rho[j] * rho[j])) * kernel.derivative_over_r(r) * x_ij;
       a += settings.repulsion(r - contact_distance) / r * x_ij;
-      // j ahead of i in its desired direction, its body in i's way (closer to i's line of walking
-      // than a body diameter): the neighbours of Tordeux, Chraibi & Seyfried 2016, eq. 4, the
-      // nearest of which sets the headway s_i.
-      if (e.dot(x_ij) < 0 && std::abs(across.dot(x_ij)) <= contact_distance) headway2 = std::min(headway2, r2);
+      turned += settings.steering(r) / r * x_ij;
+    });
+    const Real turned_norm = turned.norm();
+    const Vector<2> e = turned_norm > 0 ? Vector<2>(turned / turned_norm) : desired;
+    const Vector<2> across(-e[1], e[0]);
+    // The agents ahead of i in its walking direction whose bodies are in its way (closer to its
+    // line of walking than a body diameter): the neighbours of Tordeux, Chraibi & Seyfried 2016,
+    // eq. 4, the nearest of which sets the headway s_i.
+    Real headway2 = std::numeric_limits<Real>::infinity();
+    neighbors.fluid_pairs([&](std::size_t, const Vector<2>& x_ij, Real r2) {
+      if (r2 > 0 && e.dot(x_ij) < 0 && std::abs(across.dot(x_ij)) <= contact_distance)
+        headway2 = std::min(headway2, r2);
     });
     a += (settings.headway_speed(v0[i], std::sqrt(headway2)) * e - v[i]) / settings.relaxation_time;
     neighbors.contacts([&](const auto& contact) {

@@ -94,6 +94,12 @@ class ParticleSet {
   /// the first new particle.
   std::size_t append(std::size_t count);
 
+  /// The id the next appended particle takes.
+  Index next_id() const { return next_id_; }
+  /// Makes the set `count` particles long (fields cut, or grown with zeros) with `next_id` the
+  /// next fresh id: what a checkpoint's restore does before it sets every field.
+  void resize(std::size_t count, Index next_id);
+
   /// Creates the field if it does not exist yet and returns its handle. Asking for an existing
   /// name with another kind is an error (std::invalid_argument).
   ScalarField add_scalar(std::string_view name);

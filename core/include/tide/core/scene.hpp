@@ -260,10 +260,17 @@ struct Probe {
 
 /// `count` agents spread evenly over a region (docs/crowds.md, "Agents"), walking to the nearest
 /// exit or, with a heading, along it (a corridor without exits).
+/// How a group's agents stand at the start (solvers/agent_placement.hpp).
+enum class AgentPlacement {
+  lattice,  // a square (or, too dense for it, hexagonal) lattice centred in the region
+  random,   // uniformly at random, a body diameter or more apart (random sequential addition)
+};
+
 struct AgentGroup {
   Box region;
   std::size_t count = 0;
   std::optional<Vec> heading;  // unit vector
+  AgentPlacement placement = AgentPlacement::lattice;
 };
 
 /// A region that removes and counts every agent that enters it: the space beyond a door.
@@ -291,6 +298,8 @@ struct Crowd {
   double relaxation_time = 0.5;      // s, τ
   double time_gap = 1;               // s, T of the speed from the space ahead (Tordeux et al. 2016)
   double agent_length = 0.5;         // m, ℓ: the headway at which an agent stops, a body's diameter
+  double steering_strength = 8;      // a: how far the agents close by turn one's walking direction
+  double steering_range = 0.1;       // m, D: the range of that turning (Tordeux et al. 2016, eq. 5)
   double agent_mass = 80;            // kg, m
   double body_radius = 0.25;         // m, r
   double repulsion_strength = 2000;  // N, A

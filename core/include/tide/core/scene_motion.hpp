@@ -4,7 +4,8 @@
 // particles, independent of the fluid. Every motion is a rigid one, a displacement d(τ) of the
 // solid and a rotation by θ(τ) about a fixed axis through the displaced centre c + d(τ), where
 // τ = t − time.start: the scene's geometry is the solid at the start. docs/bodies.md gives the
-// keys; solvers/include/tide/solvers/rigid_motion.hpp evaluates them.
+// keys; solvers/include/tide/solvers/rigid_motion.hpp evaluates them, and MovingWalls moves a
+// steered solid where it is steered.
 
 #include <array>
 #include <string>
@@ -58,6 +59,13 @@ struct MotionTable {
   std::vector<MotionSample> samples;
 };
 
-using Motion = std::variant<Rotation, Oscillation, FlapOscillation, MotionTable>;
+/// A translation the running program steers (tide serve's pointer drags the solid): the solid
+/// heads for the displacement it is given (Simulation::steer), no faster than `max_speed`, and
+/// stays where the scene puts it until it is given one.
+struct Steered {
+  double max_speed = 1;  // m/s
+};
+
+using Motion = std::variant<Rotation, Oscillation, FlapOscillation, MotionTable, Steered>;
 
 }  // namespace tide::scene

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tide/core/particle_set.hpp"
@@ -67,6 +68,12 @@ class FrameWriter {
   const std::filesystem::path& directory() const { return directory_; }
   std::filesystem::path xdmf_path() const;
   std::size_t frames_written() const { return grids_.size(); }
+
+  /// The XDMF <Grid> element of each frame written so far, in order: what a checkpoint keeps.
+  const std::vector<std::string>& xdmf_grids() const { return grids_; }
+  /// Continues a run that had written the frames of `grids` (xdmf_grids of its writer): the next
+  /// frame is numbered grids.size() and the XDMF file names them all.
+  void continue_after(std::vector<std::string> grids) { grids_ = std::move(grids); }
 
  private:
   std::filesystem::path directory_;

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tide/core/scene.hpp"
@@ -30,6 +31,14 @@ class SeriesWriter {
 
   const std::filesystem::path& path() const { return file_; }
   std::size_t rows() const { return row_count_; }
+
+  /// The rows added so far, as the file's text after its header: what a checkpoint keeps.
+  const std::string& rows_text() const { return rows_; }
+  /// Continues a series that had `count` rows, `text` (rows_text of its writer).
+  void continue_after(std::string text, std::size_t count) {
+    rows_ = std::move(text);
+    row_count_ = count;
+  }
 
  private:
   std::filesystem::path file_;

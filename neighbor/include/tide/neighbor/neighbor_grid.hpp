@@ -178,6 +178,8 @@ class NeighborGrid {
   std::size_t occupied_cells() const { return cell_codes_.size(); }
   std::size_t particle_count() const { return particle_cell_.size(); }
   std::size_t removed_total() const { return removed_total_; }
+  /// Sets the count of removed particles so far: a resumed run's, from its checkpoint.
+  void restore_removed_total(std::size_t count) { removed_total_ = count; }
   SortAlgorithm sort_algorithm() const { return sort_; }
   CellLookup cell_lookup() const { return lookup_; }
   /// The lookup the last update used (resolves `automatic`).

@@ -53,6 +53,8 @@ class CrowdSph final : public Simulation<2> {
   std::size_t removed_total() const override { return interactions_.fluid_grid().removed_total(); }
   std::size_t neighbor_builds() const override { return interactions_.builds(); }
   const Pipeline& pipeline() const override { return pipeline_; }
+  void save(StateArchive& archive) const override;
+  void restore(const StateArchive& archive) override;
   double bytes_per_particle() const override;
   std::optional<CrowdStatus> crowd_status() const override;
 

@@ -51,6 +51,9 @@ class IncompressibleSph final : public Simulation<D> {
   StepReport step() override;
 
   const scene::Scene& scene() const override { return scene_; }
+  bool steer(const Eigen::Vector3d& displacement) override;
+  bool set_gravity(const Vector<D>& gravity) override;
+  bool set_kinematic_viscosity(Real viscosity) override;
   double time() const override { return time_; }
   std::uint64_t step_count() const override { return step_count_; }
   const ParticleSet<D>& fluid() const override { return fluid_; }
@@ -68,6 +71,8 @@ class IncompressibleSph final : public Simulation<D> {
   std::size_t neighbor_builds() const override { return interactions_.builds(); }
   const Pipeline& pipeline() const override { return pipeline_; }
   double bytes_per_particle() const override;
+  void save(StateArchive& archive) const override;
+  void restore(const StateArchive& archive) override;
   /// The phases of a multiphase scene; null for a single fluid.
   const Phases* phases() const { return phases_ ? &*phases_ : nullptr; }
 

@@ -1,8 +1,11 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,7 +13,9 @@
 #include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/core/memory_usage.hpp"
 #include "tide/core/parallel.hpp"
+#include "tide/core/particle_set_state.hpp"
 #include "tide/core/scratch_arena.hpp"
+#include "tide/core/state_archive.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/neighbor/neighbor_list.hpp"
 #include "tide/solvers/contact.hpp"
@@ -72,42 +77,59 @@ class Interactions {
   std::size_t update(ParticleSet<D>& fluid, Listing listing = Listing::now) {
     const bool skin = fluid_grid_.skin() > 0;
     std::size_t removed = 0;
-    const auto fluid_x = std::as_const(fluid)[fluid.position()];
     for (auto& contact : contacts_) contact->positions_ = std::as_const(contact->particles_)[contact->fields_.position];
-    if (!skin || !candidates_hold(fluid)) {
-      removed = fluid_grid_.update(fluid, arena_);
-      for (auto& contact : contacts_) {
-        if (contact->moves()) contact->grid_.update(contact->particles_, arena_);
-        contact->positions_ = std::as_const(contact->particles_)[contact->fields_.position];
-        contact->fluid_to_contact_.build(fluid_grid_, contact->grid_);
-        contact->contact_to_fluid_.build(contact->grid_, fluid_grid_);
-      }
-      (skin ? fluid_candidates_ : fluid_list_).build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x);
-      for (auto& contact : contacts_) {
-        const auto contact_x = contact->positions();
-        (skin ? contact->fluid_to_contact_candidates_ : contact->fluid_to_contact_list_)
-            .build(fluid_grid_, fluid_x, contact->fluid_to_contact_, contact_x);
-        (skin ? contact->contact_to_fluid_candidates_ : contact->contact_to_fluid_list_)
-            .build(contact->grid_, contact_x, contact->contact_to_fluid_, fluid_x);
-      }
-      ++builds_;
-      if (skin) {
-        keep_positions(fluid_x, fluid.size(), built_x_);
-        for (auto& contact : contacts_)
-          if (contact->moves()) keep_positions(contact->positions(), contact->particles_.size(), contact->built_x_);
-      }
-    }
-    listing_pending_ = skin && listing == Listing::in_next_pair_walk;
-    if (skin && !listing_pending_) {
-      fluid_list_.refine(fluid_candidates_, fluid_x, fluid_x);
-      for (auto& contact : contacts_)
-        contact->fluid_to_contact_list_.refine(contact->fluid_to_contact_candidates_, fluid_x, contact->positions());
-    }
-    if (skin) {
-      for (auto& contact : contacts_)
-        contact->contact_to_fluid_list_.refine(contact->contact_to_fluid_candidates_, contact->positions(), fluid_x);
-    }
+    if (!skin || !candidates_hold(fluid)) removed = rebuild(fluid);
+    refine(fluid, listing);
     return removed;
+  }
+
+  /// What the next step reads of the neighbour relations, under "neighbors/": every contact's
+  /// particles (the walls' extrapolated state, the moving ones' sorted order), the positions of
+  /// the last build (with a skin), the build and removal counts.
+  void save(StateArchive& archive) const {
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+      const Contact<D>& contact = *contacts_[k];
+      save_particles(archive, contact_path(k), contact.particles_);
+      if (!contact.built_x_.empty()) archive.put_reals(contact_path(k) + "/.built_position", contact.built_x_);
+    }
+    archive.put_reals("neighbors/fluid_built_position", built_x_);
+    archive.put_counts("neighbors/counts", {builds_, fluid_grid_.removed_total()});
+  }
+
+  /// The state save() put, for `fluid` restored as it was then (same scene, same order). The lists
+  /// come back by a rebuild at the positions of the last build (with a skin): the sort of the set,
+  /// already in the order of those positions, is the identity (stable), so the grid and candidate
+  /// lists are those of that build, refined at the present positions as the last update did.
+  /// Without a skin every update rebuilds, so the lists are rebuilt (at the present positions) only
+  /// when `next_step` walks them before its update (the incompressible schemes' solves).
+  enum class NextStep { updates_first, walks_first };
+  void restore(const StateArchive& archive, ParticleSet<D>& fluid, NextStep next_step) {
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+      Contact<D>& contact = *contacts_[k];
+      restore_particles(archive, contact_path(k), contact.particles_);
+      contact.positions_ = std::as_const(contact.particles_)[contact.fields_.position];
+    }
+    const bool skin = fluid_grid_.skin() > 0;
+    if (skin) {
+      std::vector<std::vector<Real>> present;  // the positions now, put back after the rebuild
+      present.push_back(swap_positions(fluid, archive.reals("neighbors/fluid_built_position")));
+      for (std::size_t k = 0; k < contacts_.size(); ++k)
+        if (contacts_[k]->moves())
+          present.push_back(
+              swap_positions(contacts_[k]->particles_, archive.reals(contact_path(k) + "/.built_position")));
+      rebuild(fluid);
+      std::size_t kept = 0;
+      swap_positions(fluid, present[kept++]);
+      for (auto& contact : contacts_)
+        if (contact->moves()) swap_positions(contact->particles_, present[kept++]);
+      refine(fluid, Listing::now);
+    } else if (next_step == NextStep::walks_first) {
+      rebuild(fluid);
+      refine(fluid, Listing::now);
+    }
+    const std::span<const std::uint64_t> counts = archive.counts("neighbors/counts");
+    builds_ = counts[0];
+    fluid_grid_.restore_removed_total(counts[1]);
   }
 
   /// Calls on_fluid(i, runs) for every fluid particle i, and then on_contact(i, k, runs) for
@@ -210,6 +232,67 @@ class Interactions {
   }
 
  private:
+  // Re-sorts the fluid and the moving contacts and rebuilds the cross tables and the lists (the
+  // candidates, with a skin); returns the fluid particles removed.
+  std::size_t rebuild(ParticleSet<D>& fluid) {
+    const bool skin = fluid_grid_.skin() > 0;
+    const std::size_t removed = fluid_grid_.update(fluid, arena_);
+    const auto fluid_x = std::as_const(fluid)[fluid.position()];
+    for (auto& contact : contacts_) {
+      if (contact->moves()) contact->grid_.update(contact->particles_, arena_);
+      contact->positions_ = std::as_const(contact->particles_)[contact->fields_.position];
+      contact->fluid_to_contact_.build(fluid_grid_, contact->grid_);
+      contact->contact_to_fluid_.build(contact->grid_, fluid_grid_);
+    }
+    (skin ? fluid_candidates_ : fluid_list_).build(fluid_grid_, fluid_x, fluid_grid_.own_neighbors(), fluid_x);
+    for (auto& contact : contacts_) {
+      const auto contact_x = contact->positions();
+      (skin ? contact->fluid_to_contact_candidates_ : contact->fluid_to_contact_list_)
+          .build(fluid_grid_, fluid_x, contact->fluid_to_contact_, contact_x);
+      (skin ? contact->contact_to_fluid_candidates_ : contact->contact_to_fluid_list_)
+          .build(contact->grid_, contact_x, contact->contact_to_fluid_, fluid_x);
+    }
+    ++builds_;
+    if (skin) {
+      keep_positions(fluid_x, fluid.size(), built_x_);
+      for (auto& contact : contacts_)
+        if (contact->moves()) keep_positions(contact->positions(), contact->particles_.size(), contact->built_x_);
+    }
+    return removed;
+  }
+
+  // With a skin: the lists from the candidates at the present positions, now or (Listing) in the
+  // next walk_fluid_pairs.
+  void refine(const ParticleSet<D>& fluid, Listing listing) {
+    const bool skin = fluid_grid_.skin() > 0;
+    const auto fluid_x = fluid[fluid.position()];
+    listing_pending_ = skin && listing == Listing::in_next_pair_walk;
+    if (skin && !listing_pending_) {
+      fluid_list_.refine(fluid_candidates_, fluid_x, fluid_x);
+      for (auto& contact : contacts_)
+        contact->fluid_to_contact_list_.refine(contact->fluid_to_contact_candidates_, fluid_x, contact->positions());
+    }
+    if (skin) {
+      for (auto& contact : contacts_)
+        contact->contact_to_fluid_list_.refine(contact->contact_to_fluid_candidates_, contact->positions(), fluid_x);
+    }
+  }
+
+  static std::string contact_path(std::size_t k) { return "neighbors/contact_" + std::to_string(k); }
+
+  // Gives `set` the positions `positions` (by component, [d * n + i]) and returns those it had.
+  static std::vector<Real> swap_positions(ParticleSet<D>& set, std::span<const Real> positions) {
+    const std::size_t n = set.size();
+    if (positions.size() != D * n)
+      throw std::runtime_error("checkpoint: the positions of the last neighbour build are " +
+                               std::to_string(positions.size()) + " values for " + std::to_string(n) + " particles");
+    std::vector<Real> before;
+    keep_positions(std::as_const(set)[set.position()], n, before);
+    const VectorView<D> x = set[set.position()];
+    for (int d = 0; d < D; ++d) std::copy_n(positions.begin() + d * n, n, x.component[d]);
+    return before;
+  }
+
   // Positions by component, [d * n + i].
   static void keep_positions(const ConstVectorView<D>& x, std::size_t n, std::vector<Real>& kept) {
     kept.resize(D * n);

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "tide/core/parallel.hpp"
 #include "tide/core/particle_set.hpp"
@@ -60,7 +63,9 @@ void place_rigid_particles(const GridDomain<D>& domain, Contact<D>& contact, Vec
 /// of the step puts them where the motion has them at the step's end, with the velocity the
 /// no-slip mirror and the continuity equation read (WallFields::surface_velocity) and the
 /// acceleration of Adami, Hu & Adams 2012, eq. 27 (WallFields::acceleration). Each particle is
-/// placed from its start position, so the poses do not drift however many steps are taken.
+/// placed from its start position, so the poses do not drift however many steps are taken. A
+/// steered wall (scene::Steered) heads for the displacement steer() last gave, at most its
+/// max_speed, with that velocity over the step and no acceleration.
 template <int D>
 class MovingWalls {
  public:
@@ -74,12 +79,34 @@ class MovingWalls {
 
   bool empty() const { return walls_.empty(); }
 
+  /// Sends every steered wall towards being displaced by `target` from where the scene puts it,
+  /// the target shortened along each axis so that the wall's particles stay a particle spacing
+  /// `margin` inside the domain on its non-periodic axes. False when no wall is steered.
+  bool steer(const Eigen::Vector3d& target, Real margin) {
+    bool steered = false;
+    for (Wall& wall : walls_) {
+      if (!std::holds_alternative<scene::Steered>(wall.motion)) continue;
+      steered = true;
+      wall.steered_target = target;
+      const ParticleSet<D>& set = wall.contact->particles();
+      const auto start = set[wall.start];
+      for (int d = 0; d < D; ++d) {
+        if (domain_.periodic[d] || set.size() == 0) continue;
+        const auto [low, high] = std::minmax_element(start.component[d], start.component[d] + set.size());
+        const double least = static_cast<double>(domain_.lower[d] + margin - *low);
+        const double most = static_cast<double>(domain_.upper[d] - margin - *high);
+        wall.steered_target[d] = std::clamp(target[d], std::min(least, 0.0), std::max(most, 0.0));
+      }
+    }
+    return steered;
+  }
+
   /// Puts every moving wall where its motion has it at τ (the time since the start), wrapped
   /// into the domain on its periodic axes. Throws InstabilityError naming the contact when the
   /// motion carries a particle out of the domain on a non-periodic axis (the neighbour search
   /// would drop it).
   void move_to(double tau, std::uint64_t step, double time) {
-    for (const Wall& wall : walls_) move(wall, pose_at(wall.motion, tau), step, time);
+    for (Wall& wall : walls_) move(wall, pose_of(wall, tau), step, time);
     max_particle_speed_ = 0;
     for (const Wall& wall : walls_) {
       const ParticleSet<D>& set = wall.contact->particles();
@@ -98,7 +125,28 @@ class MovingWalls {
     Contact<D>* contact;
     scene::Motion motion;
     VectorField start;
+    // A steered wall's target, its displacement at `steered_tau` and that τ.
+    Eigen::Vector3d steered_target = Eigen::Vector3d::Zero();
+    Eigen::Vector3d steered_displacement = Eigen::Vector3d::Zero();
+    double steered_tau = 0;
   };
+
+  static RigidPose pose_of(Wall& wall, double tau) {
+    const auto* steered = std::get_if<scene::Steered>(&wall.motion);
+    if (!steered) return pose_at(wall.motion, tau);
+    RigidPose pose;
+    const double dt = tau - wall.steered_tau;
+    if (dt > 0) {
+      Eigen::Vector3d move = wall.steered_target - wall.steered_displacement;
+      const double reach = steered->max_speed * dt;
+      if (move.norm() > reach) move *= reach / move.norm();
+      wall.steered_displacement += move;
+      wall.steered_tau = tau;
+      pose.velocity = move / dt;
+    }
+    pose.displacement = wall.steered_displacement;
+    return pose;
+  }
 
   void move(const Wall& wall, const RigidPose& pose, std::uint64_t step, double time) const {
     place_rigid_particles<D>(

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "tide/core/particle_set.hpp"
+#include "tide/core/state_archive.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/body_contacts.hpp"
 #include "tide/solvers/contact.hpp"
@@ -139,7 +142,40 @@ class RigidBodies {
     return fastest;
   }
 
+  /// Each body's motion and last summed loads, under "bodies/<k>" (its particles are a contact's:
+  /// Interactions::save).
+  void save(StateArchive& archive) const {
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      const Entry& entry = bodies_[k];
+      archive.put_doubles(path(k) + "/motion", entry.body.motion_state());
+      std::vector<double> loads;
+      for (const Load* load : {&entry.fluid, &entry.solids})
+        for (const Eigen::Vector3d* v : {&load->force, &load->torque})
+          loads.insert(loads.end(), v->data(), v->data() + 3);
+      archive.put_doubles(path(k) + "/loads", loads);
+    }
+  }
+
+  /// Takes back what save() put.
+  void restore(const StateArchive& archive) {
+    for (std::size_t k = 0; k < bodies_.size(); ++k) {
+      Entry& entry = bodies_[k];
+      entry.body.restore_motion_state(archive.doubles(path(k) + "/motion"));
+      const std::span<const double> loads = archive.doubles(path(k) + "/loads");
+      if (loads.size() != 12) throw std::runtime_error("checkpoint entry '" + path(k) + "/loads': expected 12 values");
+      std::size_t i = 0;
+      for (Load* load : {&entry.fluid, &entry.solids}) {
+        for (Eigen::Vector3d* v : {&load->force, &load->torque}) {
+          *v = Eigen::Vector3d(loads[i], loads[i + 1], loads[i + 2]);
+          i += 3;
+        }
+      }
+    }
+  }
+
  private:
+  static std::string path(std::size_t k) { return "bodies/" + std::to_string(k); }
+
   // A force and its torque about the body's reference point.
   struct Load {
     Eigen::Vector3d force = Eigen::Vector3d::Zero();

@@ -2,6 +2,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <span>
+#include <vector>
 
 #include "tide/core/scene_body.hpp"
 #include "tide/solvers/mass_properties.hpp"
@@ -67,6 +69,12 @@ class RigidBody {
   /// Translational plus rotational kinetic energy, M v_c²/2 + ω·L/2 about the reference point
   /// (about a pivot, the whole kinetic energy is ω·L/2).
   double kinetic_energy() const;
+
+  /// What changes as the body moves, as numbers (a checkpoint's part): the reference point, the
+  /// orientation, the velocity, the angular momentum and the accelerations of the last kick.
+  std::vector<double> motion_state() const;
+  /// Takes back what motion_state() gave; std::invalid_argument for another count of numbers.
+  void restore_motion_state(std::span<const double> state);
 
  private:
   Eigen::Vector3d angular_velocity_at(const Eigen::Quaterniond& orientation) const;

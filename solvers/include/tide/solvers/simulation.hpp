@@ -5,10 +5,13 @@
 #include <optional>
 #include <string_view>
 
+#include <Eigen/Core>
+
 #include "tide/core/kernels/kernel.hpp"
 #include "tide/core/memory_usage.hpp"
 #include "tide/core/particle_set.hpp"
 #include "tide/core/scene.hpp"
+#include "tide/core/state_archive.hpp"
 #include "tide/neighbor/neighbor_grid.hpp"
 #include "tide/solvers/crowd_status.hpp"
 #include "tide/solvers/interactions.hpp"
@@ -53,6 +56,24 @@ class Simulation {
   virtual const RigidBodies<D>* bodies() const { return nullptr; }
   /// The crowd's counts and means (solver.scheme "crowd"); empty for a fluid scheme.
   virtual std::optional<CrowdStatus> crowd_status() const { return std::nullopt; }
+
+  // Changes while it runs (tide serve's controls), from the next step on; false where the scheme
+  // or the scene has nothing to change.
+
+  /// Sends the scene's steered obstacles (scene::Steered) towards being displaced by
+  /// `displacement` from where the scene puts them, kept inside the domain.
+  virtual bool steer(const Eigen::Vector3d& /*displacement*/) { return false; }
+  /// Replaces the scene's gravity vector (solver.gravity_ramp_time still raises it from zero).
+  virtual bool set_gravity(const Vector<D>& /*gravity*/) { return false; }
+  /// Replaces the fluid's kinematic viscosity, m²/s: only for laminar viscosity with one fluid.
+  virtual bool set_kinematic_viscosity(Real /*viscosity*/) { return false; }
+
+  /// Puts everything the next step reads into `archive` (a checkpoint, docs/output.md).
+  virtual void save(StateArchive& archive) const = 0;
+  /// Continues from what save() put for the same scene into `archive`: every step after this one
+  /// gives the same bits as it would have after save(). std::runtime_error naming the entry when
+  /// the archive lacks one or holds it at another length.
+  virtual void restore(const StateArchive& archive) = 0;
   /// Bytes per fluid particle: fluid and wall fields plus every neighbour table.
   virtual double bytes_per_particle() const = 0;
   /// Those bytes item by item (MemoryUsage); a scheme that does not itemise them reports one item.

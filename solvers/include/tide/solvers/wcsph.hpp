@@ -49,6 +49,9 @@ class Wcsph final : public Simulation<D> {
   StepReport step() override;
 
   const scene::Scene& scene() const override { return scene_; }
+  bool steer(const Eigen::Vector3d& displacement) override;
+  bool set_gravity(const Vector<D>& gravity) override;
+  bool set_kinematic_viscosity(Real viscosity) override;
   double time() const override { return time_; }
   std::uint64_t step_count() const override { return step_count_; }
   const ParticleSet<D>& fluid() const override { return fluid_; }
@@ -74,6 +77,8 @@ class Wcsph final : public Simulation<D> {
   double bytes_per_particle() const override;
   MemoryUsage memory_usage() const override;
   const RigidBodies<D>* bodies() const override { return &bodies_; }
+  void save(StateArchive& archive) const override;
+  void restore(const StateArchive& archive) override;
 
  private:
   void set_hydrostatic_density();
