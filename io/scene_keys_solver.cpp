@@ -121,7 +121,8 @@ std::span<const Key<scene::Solver>> solver_keys() {
          solver.max_divergence_error = values.number(value, in_unit_interval);
        }},
       {"max_solver_iterations", "integer in [1, 10⁶]", "–", "`100`",
-       "`dfsph`, `iisph`: Jacobi sweeps (or conjugate-gradient iterations) per solve at most. A solve that reaches the cap above its threshold logs a "
+       "`dfsph`, `iisph`: Jacobi sweeps (or conjugate-gradient iterations) per solve at most. A solve that reaches the "
+       "cap above its threshold logs a "
        "warning with the step and the error.",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Solver& solver) {
@@ -130,9 +131,9 @@ std::span<const Key<scene::Solver>> solver_keys() {
       {"pressure_solver", "`jacobi` or `conjugate_gradients`", "–", "`jacobi`",
        "`dfsph`, `iisph`: `jacobi`, projected Jacobi sweeps stopped by the mean density error; "
        "`conjugate_gradients`, preconditioned conjugate gradients on the pressure equation made symmetric by the "
-       "walls' adjoint term, stopped also by an energy-norm error estimate that sees smooth errors: hydrostatic "
-       "pressure 5× closer, DFSPH Taylor-Green within 2%, the DFSPH 2D dam break 2.6× slower "
-       "([validation.md](validation.md)). One fluid only; several fluids keep the Jacobi sweeps.",
+       "walls' adjoint term, stopped also by an energy-norm error estimate that sees smooth errors: the 2D tank's "
+       "pressure error 5× smaller, DFSPH Taylor–Green within 2%, the DFSPH 2D dam break 2.6× slower (see "
+       "[Incompressible schemes](#incompressible-schemes)). One fluid only; several fluids keep the Jacobi sweeps.",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Solver& solver) {
          solver.pressure_solver = values.choice(value, pressure_solver_names);

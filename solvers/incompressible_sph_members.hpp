@@ -329,9 +329,7 @@ SolveReport IncompressibleSph<D>::solve(ScalarField pressure_field, Target targe
     return phase.empty() ? rest_density_ : phases_->table[phase[i]].rest_density;
   };
   const auto weight_at = [&](std::size_t i) { return phase.empty() ? Real(1) : phase_weight[phase[i]]; };
-  // Conjugate gradients where the scene asks for them and there is one fluid (several fluids: the
-  // projected Jacobi sweeps, whose update need not be symmetric).
-  const bool conjugate = !phases_ && scene_.solver.pressure_solver == scene::PressureSolver::conjugate_gradients;
+  const bool conjugate = conjugate_gradients();
   if (!conjugate) iterate_.resize(fluid_.size());
   bool symmetric_walls = conjugate && interactions_.contact_count() > 0;
   if (symmetric_walls) adjoint_.resize(fluid_.size());

@@ -212,7 +212,7 @@ struct Solver {
   double max_divergence_error = 0.001;  // DFSPH divergence solve: mean error of Δt Dρ/Dt, as a share of ρ0
   int max_solver_iterations = 100;      // cap per pressure solve
   PressureSolver pressure_solver = PressureSolver::jacobi;  // DFSPH and IISPH
-  int max_failed_solves = 10;           // consecutive steps whose solve missed its threshold before the run stops
+  int max_failed_solves = 10;  // consecutive steps whose solve missed its threshold before the run stops
   SurfaceTension surface_tension;
   BodyContact body_contact;  // between rigid bodies and with walls (scene_body.hpp)
 };

@@ -31,15 +31,17 @@ struct PressureSolveFields {
 
 /// Incompressible SPH, DFSPH or IISPH (IncompressibleScheme says which): density by summation,
 /// the non-pressure forces (viscosity of the WCSPH passes, gravity) integrated first, then the
-/// pressure that brings every particle's predicted density to ρ0 found by preconditioned conjugate gradients (several
-/// fluids: Jacobi sweeps), with an adaptive time step from the flow speed alone. Walls are the WCSPH wall particles,
-/// with their pressure extrapolated from the fluid's before every sweep (passes/pressure_solve.hpp). The first solve
-/// starts from the hydrostatic pressure. A solve that misses its threshold within the iteration cap logs a warning;
-/// solver.max_failed_solves consecutive steps with such a miss stop the run with an InstabilityError. Several fluids
-/// (rest densities within max_incompressible_density_ratio of each other) take the number-density form of WCSPH's
-/// multiphase passes (density ρ_i = m_i Σ_j W_ij and the pressure force of Hu & Adams 2006), each particle's density
-/// driven to the rest density of its phase, from a layered hydrostatic start. Every pass gathers, so results are
-/// bitwise identical for any thread count.
+/// pressure that brings every particle's predicted density to ρ0 found by Jacobi sweeps (or, one
+/// fluid, preconditioned conjugate gradients where solver.pressure_solver asks), with an
+/// adaptive time step from the flow speed alone. Walls are the WCSPH wall particles, with their
+/// pressure extrapolated from the fluid's before every sweep (passes/pressure_solve.hpp). The first
+/// solve starts from the hydrostatic pressure. A solve that misses its threshold within the iteration cap logs a
+/// warning; solver.max_failed_solves consecutive steps with such a miss stop the run with an
+/// InstabilityError. Several fluids (rest densities within max_incompressible_density_ratio of
+/// each other) take the number-density form of WCSPH's multiphase passes (density
+/// ρ_i = m_i Σ_j W_ij and the pressure force of Hu & Adams 2006), each particle's density driven
+/// to the rest density of its phase, from a layered hydrostatic start. Every pass gathers, so
+/// results are bitwise identical for any thread count.
 template <int D>
 class IncompressibleSph final : public Simulation<D> {
  public:
@@ -97,6 +99,11 @@ class IncompressibleSph final : public Simulation<D> {
   /// DFSPH's divergence solve, from the velocities after the density solve.
   SolveReport solve_divergence(Real dt);
   SolveReport solve(ScalarField pressure, Target target, Real warm_start, const Vector<D>& wall_gravity, Real dt);
+  /// The scene asks for conjugate gradients and there is one fluid (several fluids keep the projected Jacobi
+  /// sweeps, whose update need not be symmetric).
+  bool conjugate_gradients() const {
+    return !phases_ && scene_.solver.pressure_solver == scene::PressureSolver::conjugate_gradients;
+  }
   void count_failures(const StepReport& report);
   void check_state();
 
@@ -126,8 +133,9 @@ class IncompressibleSph final : public Simulation<D> {
   // particle, and per wall particle of each contact.
   std::vector<Real> adjoint_;
   std::vector<std::vector<Real>> wall_adjoint_;
-  // Σ_i (|Δt a_i|² + |v_i − v*_i|²) of the step's density solve: the scale of the divergence
-  // solve's stopping test.
+  // Σ_i (|Δt a_i|² + |v_i − v*_i|²) of the step's density solve: the scale of the same step's
+  // divergence solve's stopping test (written before it is read in every step, so no checkpoint
+  // holds it).
   Real reference_energy_ = 0;
   std::vector<Real> pressure_term_;  // p/ρ² of one fluid in a sweep (passes::pressure_velocity); scratch
   // One fluid whose particles all have one mass, and walls of one mass: the sweeps read the masses
