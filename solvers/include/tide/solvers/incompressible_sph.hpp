@@ -121,9 +121,9 @@ class IncompressibleSph final : public Simulation<D> {
   ParticleSet<D> fluid_;
   FluidFields<D> fluid_fields_;
   PressureSolveFields<D> solve_fields_;
-  // Scratch of one solve, not sorted: the conjugate gradients' iterate p_k (several fluids: p⁽ᵏ⁻¹⁾ of
-  // the Chebyshev recurrence), residual ρ* − ρ0, search direction (in p), and the particles held
-  // at p = 0 (solve()).
+  // Scratch of one solve, not sorted: the conjugate gradients' iterate p_k (the Jacobi sweeps:
+  // p⁽ᵏ⁻¹⁾ of the Chebyshev recurrence), residual ρ* − ρ0, search direction (in p), and the
+  // particles held at p = 0 (solve()).
   std::vector<Real> iterate_;
   std::vector<Real> start_;  // the pressure the conjugate gradients started from
   std::vector<Real> residual_;
