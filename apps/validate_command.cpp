@@ -68,7 +68,7 @@ std::optional<Plan> make_plan(const ValidateOptions& options) {
     plan.cases.push_back(*study_case);
   }
   const std::vector<std::string>& schemes = validation::scheme_names();
-  plan.schemes = options.schemes.empty() ? schemes : options.schemes;
+  plan.schemes = options.schemes.empty() ? validation::default_scheme_names() : options.schemes;
   for (const std::string& name : plan.schemes) {
     if (std::find(schemes.begin(), schemes.end(), name) == schemes.end()) {
       std::cerr << "tide: validate: unknown scheme '" << name << "'; the schemes are: " << joined(schemes) << '\n';
@@ -239,8 +239,9 @@ int list_cases() {
     std::printf("%-20s %s\n%-20s resolutions %s (%s)\n", study_case.name.c_str(), study_case.title.c_str(), "",
                 joined(resolutions).c_str(), study_case.resolution_meaning.c_str());
   }
-  std::printf("schemes: %s\nkernels: %s (default: %s)\n", joined(validation::scheme_names()).c_str(),
-              joined(all_kernel_names()).c_str(), joined(default_kernel_names()).c_str());
+  std::printf("schemes: %s (default: %s)\nkernels: %s (default: %s)\n", joined(validation::scheme_names()).c_str(),
+              joined(validation::default_scheme_names()).c_str(), joined(all_kernel_names()).c_str(),
+              joined(default_kernel_names()).c_str());
   return exit_ok;
 }
 

@@ -33,6 +33,8 @@ inline constexpr std::array<Named<scene::SurfaceTensionModel>, 3> surface_tensio
     {{"csf", scene::SurfaceTensionModel::csf},
      {"akinci", scene::SurfaceTensionModel::akinci},
      {"pairwise", scene::SurfaceTensionModel::pairwise}}};
+inline constexpr std::array<Named<scene::PressureSolver>, 2> pressure_solver_names{
+    {{"jacobi", scene::PressureSolver::jacobi}, {"conjugate_gradients", scene::PressureSolver::conjugate_gradients}}};
 inline constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
     {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
 /// A mesh file's length unit, in metres.

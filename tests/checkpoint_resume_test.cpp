@@ -126,10 +126,12 @@ scene::Scene wcsph(scene::DensityMethod density, scene::Shifting shifting, doubl
   return s;
 }
 
-scene::Scene incompressible(scene::Scheme scheme, double skin) {
+scene::Scene incompressible(scene::Scheme scheme, double skin,
+                            scene::PressureSolver solver = scene::PressureSolver::jacobi) {
   scene::Scene s = small_dam_break_2d();
   s.solver.scheme = scheme;
   s.solver.neighbor_skin = skin;
+  s.solver.pressure_solver = solver;
   return s;
 }
 
@@ -169,43 +171,60 @@ scene::Scene crowd() {
 }
 
 using scene::DensityMethod;
+using scene::PressureSolver;
 using scene::Scheme;
 using scene::Shifting;
 using scene::SurfaceTensionModel;
 
 INSTANTIATE_TEST_SUITE_P(
     EverySchemeAndFeature, CheckpointResume,
-    testing::Values(ResumeCase{"wcsph_summation", [] { return wcsph(DensityMethod::summation, Shifting::none); }},
-                    ResumeCase{"wcsph_continuity", [] { return wcsph(DensityMethod::continuity, Shifting::none, 0); }},
-                    ResumeCase{"wcsph_delta_sph", [] { return wcsph(DensityMethod::continuity, Shifting::none, 0.1); }},
-                    ResumeCase{"wcsph_shifting", [] { return wcsph(DensityMethod::summation, Shifting::fickian); }},
-                    // Without a skin the resume rebuilds nothing: the shifted positions are not those of the
-                    // last sort, and the next search sorts from the order it finds.
-                    ResumeCase{"wcsph_shifting_no_skin",
-                               [] {
-                                 scene::Scene s = wcsph(DensityMethod::continuity, Shifting::fickian);
-                                 s.solver.neighbor_skin = 0;
-                                 return s;
-                               }},
-                    ResumeCase{"wcsph_artificial_stress",
-                               [] { return wcsph(DensityMethod::summation, Shifting::none, 0.1, 0.2); }},
-                    ResumeCase{"dfsph", [] { return incompressible(Scheme::dfsph, 0); }, 40},
-                    ResumeCase{"iisph", [] { return incompressible(Scheme::iisph, 0); }, 40},
-                    ResumeCase{"dfsph_with_skin", [] { return incompressible(Scheme::dfsph, 0.003); }, 40},
-                    ResumeCase{"multiphase_csf", [] { return droplet(SurfaceTensionModel::csf); }},
-                    ResumeCase{"multiphase_akinci", [] { return droplet(SurfaceTensionModel::akinci); }},
-                    ResumeCase{"multiphase_pairwise", [] { return droplet(SurfaceTensionModel::pairwise); }},
-                    ResumeCase{"multiphase_dfsph",
-                               [] {
-                                 scene::Scene s = test::rayleigh_taylor_scene(0.08);
-                                 s.solver.scheme = Scheme::dfsph;
-                                 return s;
-                               },
-                               40},
-                    ResumeCase{"inflow", [] { return test::inflow_channel_scene(1.0 / 40); }},
-                    ResumeCase{"moving_paddle_wcsph", [] { return with_paddle(Scheme::wcsph); }},
-                    ResumeCase{"moving_paddle_iisph", [] { return with_paddle(Scheme::iisph); }, 40},
-                    ResumeCase{"rigid_body", with_body}, ResumeCase{"crowd", crowd, 400}),
+    testing::Values(
+        ResumeCase{"wcsph_summation", [] { return wcsph(DensityMethod::summation, Shifting::none); }},
+        ResumeCase{"wcsph_continuity", [] { return wcsph(DensityMethod::continuity, Shifting::none, 0); }},
+        ResumeCase{"wcsph_delta_sph", [] { return wcsph(DensityMethod::continuity, Shifting::none, 0.1); }},
+        ResumeCase{"wcsph_shifting", [] { return wcsph(DensityMethod::summation, Shifting::fickian); }},
+        // Without a skin the resume rebuilds nothing: the shifted positions are not those of the
+        // last sort, and the next search sorts from the order it finds.
+        ResumeCase{"wcsph_shifting_no_skin",
+                   [] {
+                     scene::Scene s = wcsph(DensityMethod::continuity, Shifting::fickian);
+                     s.solver.neighbor_skin = 0;
+                     return s;
+                   }},
+        ResumeCase{"wcsph_artificial_stress", [] { return wcsph(DensityMethod::summation, Shifting::none, 0.1, 0.2); }},
+        ResumeCase{"dfsph", [] { return incompressible(Scheme::dfsph, 0); }, 40},
+        ResumeCase{"iisph", [] { return incompressible(Scheme::iisph, 0); }, 40},
+        ResumeCase{"dfsph_with_skin", [] { return incompressible(Scheme::dfsph, 0.003); }, 40},
+        ResumeCase{"dfsph_conjugate_gradients",
+                   [] { return incompressible(Scheme::dfsph, 0, PressureSolver::conjugate_gradients); }, 40},
+        // A closed flow: pressure of both signs, and DFSPH's divergence solve with the
+        // energy-norm test.
+        ResumeCase{"dfsph_conjugate_gradients_periodic",
+                   [] {
+                     scene::Scene s = periodic_box_2d();
+                     s.fluid[0].velocity = scene::TaylorGreenVelocity{1, 0.2};
+                     s.solver.clamp_negative_pressure = false;
+                     s.solver.scheme = Scheme::dfsph;
+                     s.solver.pressure_solver = PressureSolver::conjugate_gradients;
+                     return s;
+                   },
+                   40},
+        ResumeCase{"iisph_conjugate_gradients",
+                   [] { return incompressible(Scheme::iisph, 0, PressureSolver::conjugate_gradients); }, 40},
+        ResumeCase{"multiphase_csf", [] { return droplet(SurfaceTensionModel::csf); }},
+        ResumeCase{"multiphase_akinci", [] { return droplet(SurfaceTensionModel::akinci); }},
+        ResumeCase{"multiphase_pairwise", [] { return droplet(SurfaceTensionModel::pairwise); }},
+        ResumeCase{"multiphase_dfsph",
+                   [] {
+                     scene::Scene s = test::rayleigh_taylor_scene(0.08);
+                     s.solver.scheme = Scheme::dfsph;
+                     return s;
+                   },
+                   40},
+        ResumeCase{"inflow", [] { return test::inflow_channel_scene(1.0 / 40); }},
+        ResumeCase{"moving_paddle_wcsph", [] { return with_paddle(Scheme::wcsph); }},
+        ResumeCase{"moving_paddle_iisph", [] { return with_paddle(Scheme::iisph); }, 40},
+        ResumeCase{"rigid_body", with_body}, ResumeCase{"crowd", crowd, 400}),
     [](const testing::TestParamInfo<ResumeCase>& info) { return info.param.name; });
 
 }  // namespace

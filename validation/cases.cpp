@@ -36,6 +36,12 @@ const Case* find_case(std::string_view name) {
 }
 
 const std::vector<std::string>& scheme_names() {
+  static const std::vector<std::string> names{"wcsph",    "wcsph_continuity",       "dfsph", "iisph", "dfsph_cg",
+                                              "iisph_cg", std::string(crowd_scheme)};
+  return names;
+}
+
+const std::vector<std::string>& default_scheme_names() {
   static const std::vector<std::string> names{"wcsph", "wcsph_continuity", "dfsph", "iisph", std::string(crowd_scheme)};
   return names;
 }

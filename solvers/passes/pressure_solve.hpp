@@ -173,4 +173,68 @@ void pressure_velocity(const RuntimeKernel<D>& kernel, ParticleSet<D>& fluid, co
       });
 }
 
+/// The adjoint of the walls' extrapolated pressure in the density error, which makes the
+/// pressure equation symmetric. The sweep's pressure force on fluid particle i holds
+/// Σ_b m_b (p_b/ρ_b²) ∇W_ib with p_b = Σ_f W_bf p_f / Σ_f W_bf (+ the hydrostatic term, a constant
+/// of the solve; Adami, Hu & Adams 2012, eq. 27): a coupling C_if = Σ_b m_b W_bf ∇W_ib / (ρ_b² S_b)
+/// (S_b = Σ_f W_bf) from the pressure of f to the velocity of i whose transpose the continuity
+/// sum does not have. Adding it, ρ*_f − ρ0 gains Δt ρ_f² Σ_b W_fb s_b with
+/// s_b = m_b Σ_i (v_i − v_b)·∇W_ib / (ρ_b² S_b), i.e. each wall particle's predicted compression
+/// Σ_i m_b (v_i − v_b)·∇W_ib handed back to the fluid particles its pressure comes from, with the
+/// weights of that extrapolation (ρ_f² because the unknowns of the symmetric form are p/ρ²). At rest
+/// it vanishes, so the fluid at rest is solved for the same pressure. Two gathers: wall particles
+/// into `wall_terms` (one vector per contact, empty for a contact that is not a wall), then fluid
+/// particles into `adjoint`.
+template <int D>
+void wall_pressure_adjoint(const RuntimeKernel<D>& kernel, const Interactions<D>& interactions,
+                           const ParticleSet<D>& fluid, const FluidFields<D>& f, VectorField velocity,
+                           std::vector<std::vector<Real>>& wall_terms, std::span<Real> adjoint) {
+  const auto x = fluid[f.position];
+  const auto v = fluid[velocity];
+  const auto density = fluid[f.density];
+  wall_terms.resize(interactions.contact_count());
+  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+    const Contact<D>& contact = interactions.contact(k);
+    std::vector<Real>& terms = wall_terms[k];
+    if (contact.role() != ContactRole::wall) {
+      terms.clear();
+      continue;
+    }
+    const WallFields<D>& w = contact.fields();
+    const ParticleSet<D>& particles = contact.particles();
+    const auto mass = particles[w.mass];
+    const auto wall_density = particles[w.density];
+    const ConstVectorView<D> surface_velocity =
+        w.surface_velocity ? particles[*w.surface_velocity] : ConstVectorView<D>{};
+    terms.resize(particles.size());
+    kernel.visit([&](const auto& concrete) {
+      for_each_contact_particle<D>(
+          contact, x, ScalarOutput{terms}, [&](std::size_t b, const FluidNeighborsOf<D>& fluid_neighbors) {
+            const Vector<D> own_velocity = w.surface_velocity ? surface_velocity[b] : Vector<D>::Zero();
+            Real weight_sum = 0;
+            Real compression = 0;
+            fluid_neighbors.pairs([&](Index j, const Vector<D>& x_bj, Real r2) {
+              const Real r = std::sqrt(r2);
+              weight_sum += concrete.value(r);
+              compression += (v[j] - own_velocity).dot(concrete.gradient(Vector<D>(-x_bj), r));
+            });
+            const Real rho_b = wall_density[b];
+            return weight_sum > 0 ? mass[b] * compression / (rho_b * rho_b * weight_sum) : Real(0);
+          });
+    });
+  }
+  for_each_fluid_particle<D>(
+      interactions, x, ScalarOutput{adjoint}, [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+        Real sum = 0;
+        neighbors.contacts([&](const ContactNeighbors<D>& contact) {
+          const std::vector<Real>& terms = wall_terms[contact.number()];
+          if (terms.empty()) return;
+          kernel.visit([&](const auto& concrete) {
+            contact.pairs([&](Index b, const Vector<D>&, Real r2) { sum += concrete.value(std::sqrt(r2)) * terms[b]; });
+          });
+        });
+        return density[i] * density[i] * sum;
+      });
+}
+
 }  // namespace tide::passes

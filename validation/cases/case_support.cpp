@@ -19,13 +19,14 @@ void apply_variant(scene::Scene& scene, const Variant& variant) {
   } else if (variant.scheme == "wcsph_continuity") {
     scene.solver.density = scene::DensityMethod::continuity;
     scene.solver.delta_sph = 0.1;
-  } else if (variant.scheme == "dfsph") {
+  } else if (variant.scheme == "dfsph" || variant.scheme == "dfsph_cg") {
     scene.solver.scheme = scene::Scheme::dfsph;
-  } else if (variant.scheme == "iisph") {
+  } else if (variant.scheme == "iisph" || variant.scheme == "iisph_cg") {
     scene.solver.scheme = scene::Scheme::iisph;
   } else {
     throw std::invalid_argument("unknown scheme \"" + variant.scheme + "\"");
   }
+  if (variant.scheme.ends_with("_cg")) scene.solver.pressure_solver = scene::PressureSolver::conjugate_gradients;
   scene.kernel = variant.kernel;
   scene.smoothing_ratio = smoothing_ratio_for(variant.kernel);
   scene.walls.layers = scene::required_wall_layers(scene.kernel, scene.smoothing_ratio);

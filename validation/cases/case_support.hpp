@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,13 +34,27 @@ scene::Scene water_tank(int dimension, double width, double depth, double rim, d
 /// its source header; the first other line names the columns).
 Curve read_reference(const std::string& file, int x_column = 0, int y_column = 1);
 
+/// The pressure-solve sweeps of a run: evaluations of the pressure's velocity and density error,
+/// DFSPH's density and divergence solves together (SolveReport::sweeps; WCSPH has none).
+struct SweepCount {
+  std::uint64_t sweeps = 0;
+  std::uint64_t steps = 0;
+  double per_step() const { return steps > 0 ? static_cast<double>(sweeps) / static_cast<double>(steps) : 0; }
+};
+
 /// Steps `simulation` until its time reaches `end`, calling `observe(simulation)` after each
-/// step; returns the wall seconds spent stepping (observers included, which are cheap).
+/// step; returns the wall seconds spent stepping (observers included, which are cheap). Counts
+/// the sweeps into `count` where given.
 template <int D, class Observer>
-double run_until(Simulation<D>& simulation, double end, Observer&& observe) {
+double run_until(Simulation<D>& simulation, double end, Observer&& observe, SweepCount* count = nullptr) {
   const auto start = std::chrono::steady_clock::now();
   while (simulation.time() < end * (1 - 1e-12)) {
-    simulation.step();
+    const StepReport report = simulation.step();
+    if (count) {
+      ++count->steps;
+      if (report.density_solve) count->sweeps += static_cast<std::uint64_t>(report.density_solve->sweeps);
+      if (report.divergence_solve) count->sweeps += static_cast<std::uint64_t>(report.divergence_solve->sweeps);
+    }
     observe(simulation);
   }
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

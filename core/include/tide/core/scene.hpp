@@ -179,6 +179,12 @@ struct SurfaceTension {
   bool unlike_attraction = true;
 };
 
+/// How DFSPH and IISPH solve for the pressure (docs/scenes.md, solver.pressure_solver).
+enum class PressureSolver {
+  jacobi,               // projected Jacobi sweeps (the density solve Chebyshev-accelerated)
+  conjugate_gradients,  // preconditioned conjugate gradients on the symmetric equation, energy-norm stop
+};
+
 struct Solver {
   Scheme scheme = Scheme::wcsph;
   EquationOfState equation_of_state = EquationOfState::tait;
@@ -205,7 +211,8 @@ struct Solver {
   double max_density_error = 0.0005;    // pressure solve ends when the mean density error is below this share of ρ0
   double max_divergence_error = 0.001;  // DFSPH divergence solve: mean error of Δt Dρ/Dt, as a share of ρ0
   int max_solver_iterations = 100;      // cap per pressure solve
-  int max_failed_solves = 10;           // consecutive steps whose solve missed its threshold before the run stops
+  PressureSolver pressure_solver = PressureSolver::jacobi;  // DFSPH and IISPH
+  int max_failed_solves = 10;  // consecutive steps whose solve missed its threshold before the run stops
   SurfaceTension surface_tension;
   BodyContact body_contact;  // between rigid bodies and with walls (scene_body.hpp)
 };

@@ -31,7 +31,8 @@ struct PressureSolveFields {
 
 /// Incompressible SPH, DFSPH or IISPH (IncompressibleScheme says which): density by summation,
 /// the non-pressure forces (viscosity of the WCSPH passes, gravity) integrated first, then the
-/// pressure that brings every particle's predicted density to ρ0 found by Jacobi sweeps, with an
+/// pressure that brings every particle's predicted density to ρ0 found by Jacobi sweeps (or, one
+/// fluid, preconditioned conjugate gradients where solver.pressure_solver asks), with an
 /// adaptive time step from the flow speed alone. Walls are the WCSPH wall particles, with their
 /// pressure extrapolated from the fluid's before every sweep (passes/pressure_solve.hpp). The first
 /// solve starts from the hydrostatic pressure. A solve that misses its threshold within the iteration cap logs a
@@ -101,6 +102,11 @@ class IncompressibleSph final : public Simulation<D> {
   /// DFSPH's divergence solve, from the velocities after the density solve.
   SolveReport solve_divergence(Real dt);
   SolveReport solve(ScalarField pressure, Target target, Real warm_start, const Vector<D>& wall_gravity, Real dt);
+  /// The scene asks for conjugate gradients and there is one fluid (several fluids keep the projected Jacobi
+  /// sweeps, whose update need not be symmetric).
+  bool conjugate_gradients() const {
+    return !phases_ && scene_.solver.pressure_solver == scene::PressureSolver::conjugate_gradients;
+  }
   void count_failures(const StepReport& report);
   void check_state();
 
@@ -118,7 +124,22 @@ class IncompressibleSph final : public Simulation<D> {
   ParticleSet<D> fluid_;
   FluidFields<D> fluid_fields_;
   PressureSolveFields<D> solve_fields_;
-  std::vector<Real> before_sweep_;   // p⁽ᵏ⁻¹⁾ of the Chebyshev recurrence; scratch of one solve, not sorted
+  // Scratch of one solve, not sorted: the conjugate gradients' iterate p_k (the Jacobi sweeps:
+  // p⁽ᵏ⁻¹⁾ of the Chebyshev recurrence), residual ρ* − ρ0, search direction (in p), and the
+  // particles held at p = 0 (solve()).
+  std::vector<Real> iterate_;
+  std::vector<Real> start_;  // the pressure the conjugate gradients started from
+  std::vector<Real> residual_;
+  std::vector<Real> direction_;
+  std::vector<unsigned char> held_;
+  // The walls' adjoint term of the density error (passes::wall_pressure_adjoint): per fluid
+  // particle, and per wall particle of each contact.
+  std::vector<Real> adjoint_;
+  std::vector<std::vector<Real>> wall_adjoint_;
+  // Σ_i (|Δt a_i|² + |v_i − v*_i|²) of the step's density solve: the scale of the same step's
+  // divergence solve's stopping test (written before it is read in every step, so no checkpoint
+  // holds it).
+  Real reference_energy_ = 0;
   std::vector<Real> pressure_term_;  // p/ρ² of one fluid in a sweep (passes::pressure_velocity); scratch
   // One fluid whose particles all have one mass, and walls of one mass: the sweeps read the masses
   // so (passes::NeighborMasses). Set with the gradient cache, after every neighbour update.

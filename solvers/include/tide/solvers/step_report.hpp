@@ -12,6 +12,7 @@ namespace tide {
 /// How one implicit pressure solve ended.
 struct SolveReport {
   int iterations = 0;  // pressure updates made
+  int sweeps = 0;      // evaluations of the pressure's velocity and density error: the solve's cost
   double error = 0;    // the mean density error it left, as a share of ρ0 (see IncompressibleSph::solve)
   bool converged = false;
 };

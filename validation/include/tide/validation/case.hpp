@@ -86,4 +86,8 @@ const Case* find_case(std::string_view name);
 /// The schemes a Variant may name, the fluid ones then "crowd".
 const std::vector<std::string>& scheme_names();
 
+/// The schemes the study runs when none are named: scheme_names() less the `_cg` variants, DFSPH
+/// and IISPH with solver.pressure_solver "conjugate_gradients", which are run by name.
+const std::vector<std::string>& default_scheme_names();
+
 }  // namespace tide::validation
