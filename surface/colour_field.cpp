@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,21 +34,25 @@ CubicSplineKernel<D> field_kernel(const FieldSettings& settings) {
   return CubicSplineKernel<D>(static_cast<Real>(settings.smoothing_ratio * settings.particle_spacing));
 }
 
-/// Every block within one block of an occupied one: where c can be non-zero.
+/// Every block within one block of an occupied one: where c can be non-zero. Dilated one axis at a
+/// time: a step of one block along an axis adds the same amount to every packed key (coordinates
+/// stay within their bits: colour_field leaves a block of margin each side), so each shifted copy
+/// stays sorted and the union is two merges, not a sort.
 template <int D>
 std::vector<std::uint64_t> blocks_in_reach(const std::vector<std::uint64_t>& occupied) {
-  std::vector<std::uint64_t> reached;
-  reached.reserve(occupied.size() * (D == 2 ? 9 : 27));
-  for (const std::uint64_t key : occupied) {
-    const GridPoint<D> block = unpack<D>(key);
-    for_each_neighbour_offset<D>([&](const GridPoint<D>& offset) {
-      GridPoint<D> neighbour{};
-      for (int d = 0; d < D; ++d) neighbour[d] = block[d] + offset[d];
-      reached.push_back(pack<D>(neighbour));
-    });
+  std::vector<std::uint64_t> reached = occupied, below, above, merged;
+  for (int d = 0; d < D; ++d) {
+    const std::uint64_t step = std::uint64_t(1) << (d * key_bits_per_axis);
+    below.resize(reached.size());
+    above.resize(reached.size());
+    std::transform(reached.begin(), reached.end(), below.begin(), [&](std::uint64_t key) { return key - step; });
+    std::transform(reached.begin(), reached.end(), above.begin(), [&](std::uint64_t key) { return key + step; });
+    merged.clear();
+    std::merge(below.begin(), below.end(), reached.begin(), reached.end(), std::back_inserter(merged));
+    reached.clear();
+    std::merge(merged.begin(), merged.end(), above.begin(), above.end(), std::back_inserter(reached));
+    reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
   }
-  std::sort(reached.begin(), reached.end());
-  reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
   return reached;
 }
 
@@ -97,6 +102,37 @@ void add_particles_near(FieldTile<D>& tile, const GridPoint<D>& tile_coordinates
   }
 }
 
+/// Whether every block within two blocks of the tile holds at least `least` particles: then the
+/// field is taken to exceed the surface level on the tile and one cell beyond it (the support is
+/// one block), and the tile is not summed (docs/rendering.md, "Speed").
+template <int D>
+bool surrounded_by_fluid(const GridPoint<D>& tile_coordinates, const ParticlesByBlock<D>& particles,
+                         std::size_t least) {
+  constexpr int margin = 2;
+  constexpr int span = tile_blocks + 2 * margin;
+  std::array<int, D> row{};
+  while (true) {
+    GridPoint<D> first{};
+    for (int d = 0; d < D; ++d) {
+      first[d] = tile_coordinates[d] * tile_blocks - margin + row[d];
+      if (first[d] < 0) return false;  // colour_field's empty margin
+    }
+    const auto& keys = particles.block_keys;
+    const auto k = static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), pack<D>(first)) - keys.begin());
+    for (std::size_t i = 0; i < std::size_t(span); ++i) {
+      GridPoint<D> block = first;
+      block[0] += static_cast<std::int64_t>(i);
+      if (k + i >= keys.size() || keys[k + i] != pack<D>(block) ||
+          particles.block_starts[k + i + 1] - particles.block_starts[k + i] < least)
+        return false;
+    }
+    int d = 1;
+    for (; d < D && row[d] == span - 1; ++d) row[d] = 0;
+    if (d == D) return true;
+    ++row[d];
+  }
+}
+
 }  // namespace
 
 template <int D>
@@ -111,10 +147,11 @@ SparseGrid<D> colour_field(std::span<const double> positions, const FieldSetting
   const std::size_t count = positions.size() / D;
   if (count == 0) return grid;
 
-  // One empty block of margin below the particles keeps every block coordinate of the reach ≥ 0.
+  // One empty block of margin below the particles, and a cell more against round-off, keeps every
+  // block coordinate of the reach ≥ 0 (points at the same places relative to the particles).
   const auto [lowest, highest] = bounds_of<D>(positions);
   for (int d = 0; d < D; ++d) {
-    grid.origin[d] = lowest[d] - support;
+    grid.origin[d] = lowest[d] - support - grid.cell_size;
     if ((highest[d] - grid.origin[d]) / grid.cell_size + 3.0 * grid.block_points >= double(max_points_per_axis))
       throw std::invalid_argument("surface reconstruction: the particles span " +
                                   std::to_string(highest[d] - lowest[d]) + " m along axis " + std::to_string(d) +
@@ -129,14 +166,24 @@ SparseGrid<D> colour_field(std::span<const double> positions, const FieldSetting
   const KernelTable table([&](double r) { return volume * kernel.value(static_cast<Real>(r)); }, support);
 
   // Tile by tile, each point summing its particles in the order of their blocks' keys and, within
-  // a block, of their indices: the same for any thread count.
+  // a block, of their indices: the same for any thread count. A tile deep in the fluid holds the
+  // interior value instead: the fewest particles a block of the fluid's lattice holds, with every
+  // block around the tile at least that full, marks one.
+  const auto lattice_points_per_axis = static_cast<std::size_t>(std::floor(support / settings.particle_spacing));
+  std::size_t least = 1;
+  for (int d = 0; d < D; ++d) least *= std::max<std::size_t>(lattice_points_per_axis, 1);
+  const double inside = interior_colour<D>(settings);
   const std::vector<std::uint64_t> tiles = tiles_of<D>(grid.block_keys);
   parallel_blocks(tiles.size(), 1, [&](std::size_t begin, std::size_t end) {
     FieldTile<D> tile(grid, table);
     for (std::size_t t = begin; t < end; ++t) {
       const GridPoint<D> coordinates = unpack<D>(tiles[t]);
-      tile.start(coordinates);
-      add_particles_near<D>(tile, coordinates, particles);
+      if (surrounded_by_fluid<D>(coordinates, particles, least)) {
+        tile.start(coordinates, inside);
+      } else {
+        tile.start(coordinates, 0.0);
+        add_particles_near<D>(tile, coordinates, particles);
+      }
       tile.store_into(grid);
     }
   });

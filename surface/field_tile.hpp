@@ -37,10 +37,10 @@ class FieldTile {
     values_.resize(points);
   }
 
-  /// Starts tile `tile` (packed tile coordinates) with every value zero.
-  void start(const GridPoint<D>& tile) {
+  /// Starts tile `tile` (tile coordinates) with every value `value`.
+  void start(const GridPoint<D>& tile, double value) {
     tile_ = tile;
-    std::fill(values_.begin(), values_.end(), 0.0);
+    std::fill(values_.begin(), values_.end(), value);
     for (int d = 0; d < D; ++d)
       for (int i = 0; i < side_; ++i)
         coordinates_[index(d, i)] = grid_.origin[d] + static_cast<double>(tile[d] * side_ + i) * grid_.cell_size;

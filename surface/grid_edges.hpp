@@ -4,6 +4,7 @@
 // them: the edge from point g one cell along `axis` is the key pack(g) · 4 + axis, the same in every
 // cell that shares the edge, so cells agree on the vertex there without talking to each other.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -71,6 +72,13 @@ class BlockCorners {
       if (d == D) break;
       ++row[d];
     }
+  }
+
+  /// Whether `level` lies between two of the values: some above it, some not; otherwise no cell
+  /// of the block is crossed.
+  bool crossed(double level) const {
+    const auto [lowest, highest] = std::minmax_element(values_.begin(), values_.end());
+    return *lowest <= level && *highest > level;
   }
 
   /// The value at `local`, each coordinate in [0, block_points].
