@@ -122,6 +122,7 @@ TEST(SurfaceReconstruction, TilesTakenAsInsideHoldFluidAndTheCavityIsMeshed) {
                                long(std::floor(x[2] / support))};
   };
   for (std::size_t i = 0; i < particles.size(); i += 3) bins[bin_of(&particles[i])].push_back(i);
+  const double volume = std::pow(spacing, 3);
   const auto direct_colour = [&](const std::array<double, 3>& x) {
     const std::array<long, 3> centre = bin_of(x.data());
     double sum = 0;
@@ -133,7 +134,7 @@ TEST(SurfaceReconstruction, TilesTakenAsInsideHoldFluidAndTheCavityIsMeshed) {
           for (const std::size_t i : found->second) {
             double squared = 0;
             for (int d = 0; d < 3; ++d) squared += (particles[i + d] - x[d]) * (particles[i + d] - x[d]);
-            sum += std::pow(spacing, 3) * kernel.value(Real(std::sqrt(squared)));
+            sum += volume * kernel.value(Real(std::sqrt(squared)));
           }
         }
     return sum;
