@@ -194,13 +194,13 @@ std::vector<SeriesRecorder<D>> series_recorders(const scene::Scene& scene, const
 template <int D>
 class MovingWallFrames {
  public:
-  MovingWallFrames(const Simulation<D>& simulation, const std::filesystem::path& directory) {
+  MovingWallFrames(const Simulation<D>& simulation, const std::filesystem::path& directory, io::VtkFiles vtk) {
     const Interactions<D>& interactions = simulation.interactions();
     for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
       if (!interactions.contact(k).moves()) continue;
       contacts_.push_back(k);
       writers_.emplace_back(directory, std::vector<std::string>{"position", "surface_velocity", "pressure"},
-                            run_name(interactions.contact(k).name()));
+                            run_name(interactions.contact(k).name()), vtk);
     }
   }
 
@@ -306,8 +306,9 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
     std::cerr << "tide: " << error.what() << '\n';
     return exit_bad_input;
   }
-  io::FrameWriter<D> writer(output_directory, scene.output.fields);
-  MovingWallFrames<D> wall_frames(*simulation, output_directory);
+  const io::VtkFiles vtk = scene.output.vtk ? io::VtkFiles::on : io::VtkFiles::off;
+  io::FrameWriter<D> writer(output_directory, scene.output.fields, "frames", vtk);
+  MovingWallFrames<D> wall_frames(*simulation, output_directory, vtk);
   const double end_time = scene.time.end;
   const double interval = scene.time.output_interval;
   OutputSchedule frames(scene.time.start + interval, interval);

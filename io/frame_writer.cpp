@@ -14,6 +14,8 @@
 
 #include "hdf5_calls.hpp"
 #include "tide/io/atomic_file.hpp"
+#include "vtk_file.hpp"
+#include "xml_text.hpp"
 
 namespace tide::io {
 namespace {
@@ -108,28 +110,6 @@ std::string numbered(std::string_view stem, std::size_t index) {
   return std::string(stem) + "_" + digits;
 }
 
-/// Text for an XML attribute value or element content; the XDMF is written with double quotes.
-std::string xml_escaped(std::string_view text) {
-  static const std::map<char, std::string_view> entities = {
-      {'&', "&amp;"}, {'<', "&lt;"}, {'>', "&gt;"}, {'"', "&quot;"}};
-  std::string escaped;
-  for (const char c : text) {
-    const auto entity = entities.find(c);
-    if (entity == entities.end())
-      escaped += c;
-    else
-      escaped += entity->second;
-  }
-  return escaped;
-}
-
-/// The shortest text that reads back as the same double, so XDMF times equal the HDF5 attribute.
-std::string exact_text(double value) {
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  return std::string(text, result.ptr);
-}
-
 /// <DataItem> for one dataset of a frame: its shape and the XDMF name of its stored type.
 std::string xdmf_data_item(const std::string& file_name, const std::string& group_name, const FieldInfo& field,
                            std::size_t count) {
@@ -174,6 +154,25 @@ std::string xdmf_grid(const std::string& file_name, const FrameContent<D>& frame
     }
   }
   return grid + "      </Grid>\n";
+}
+
+/// The time of a frame's <Grid> (xdmf_grid wrote it exactly).
+double grid_time(const std::string& grid) {
+  constexpr std::string_view tag = "<Time Value=\"";
+  const std::size_t start = grid.find(tag);
+  double time = 0;
+  if (start == std::string::npos ||
+      std::from_chars(grid.data() + start + tag.size(), grid.data() + grid.size(), time).ec != std::errc())
+    throw std::runtime_error("an XDMF grid without a time: " + grid.substr(0, 80));
+  return time;
+}
+
+/// The .pvd collection of the VTK files of the frames the XDMF grids name.
+std::string pvd_of(const std::string& run_name, const std::vector<std::string>& grids) {
+  std::vector<CollectionEntry> entries;
+  for (std::size_t k = 0; k < grids.size(); ++k)
+    entries.push_back({numbered(run_name, k) + ".vtu", grid_time(grids[k])});
+  return pvd_document(entries);
 }
 
 std::string xdmf_document(const std::string& run_name, const std::vector<std::string>& grids) {
@@ -320,8 +319,11 @@ Frame read_frame(const fs::path& path) {
 }
 
 template <int D>
-FrameWriter<D>::FrameWriter(fs::path directory, std::vector<std::string> fields, std::string run_name)
-    : directory_(std::move(directory)), fields_(fields_to_write(std::move(fields))), run_name_(std::move(run_name)) {
+FrameWriter<D>::FrameWriter(fs::path directory, std::vector<std::string> fields, std::string run_name, VtkFiles vtk)
+    : directory_(std::move(directory)),
+      fields_(fields_to_write(std::move(fields))),
+      run_name_(std::move(run_name)),
+      vtk_(vtk) {
   check_run_name(run_name_);
   std::error_code error;
   fs::create_directories(directory_, error);
@@ -334,6 +336,17 @@ fs::path FrameWriter<D>::xdmf_path() const {
 }
 
 template <int D>
+fs::path FrameWriter<D>::pvd_path() const {
+  return directory_ / (run_name_ + ".pvd");
+}
+
+template <int D>
+void FrameWriter<D>::continue_after(std::vector<std::string> grids) {
+  if (vtk_ == VtkFiles::on) pvd_of(run_name_, grids);  // every grid has its time, or nothing changes
+  grids_ = std::move(grids);
+}
+
+template <int D>
 fs::path FrameWriter<D>::write(const ParticleSet<D>& set, double time, std::uint64_t step,
                                const std::map<std::string, std::string>& attributes) {
   const std::vector<FieldInfo> fields = resolve_fields(set, fields_);
@@ -343,11 +356,15 @@ fs::path FrameWriter<D>::write(const ParticleSet<D>& set, double time, std::uint
   const fs::path frame_path = directory_ / file_name;
 
   replace_atomically(frame_path, [&](const fs::path& temporary) { write_frame_file(temporary, frame, interleaved_); });
-  // The XDMF file names the new frame only once the frame file is complete and in place.
+  if (vtk_ == VtkFiles::on) {
+    replace_atomically(directory_ / (numbered(run_name_, frames_written()) + ".vtu"),
+                       [&](const fs::path& temporary) { write_vtu_file(temporary, set, fields, time, step); });
+  }
+  // The XDMF and .pvd files name the new frame only once its files are complete and in place.
   grids_.push_back(xdmf_grid(file_name, frame));
   try {
-    const std::string document = xdmf_document(run_name_, grids_);
-    replace_atomically(xdmf_path(), [&](const fs::path& temporary) { write_text_file(temporary, document); });
+    replace_text_atomically(xdmf_path(), xdmf_document(run_name_, grids_));
+    if (vtk_ == VtkFiles::on) replace_text_atomically(pvd_path(), pvd_of(run_name_, grids_));
   } catch (...) {
     grids_.pop_back();
     throw;

@@ -46,7 +46,7 @@ std::span<const Key<scene::Time>> time_keys() {
 }
 
 std::span<const Key<scene::Output>> output_keys() {
-  static constexpr std::array<Key<scene::Output>, 3> keys{{
+  static constexpr std::array<Key<scene::Output>, 4> keys{{
       {"fields", "non-empty array of distinct field names", "–",
        "`[\"position\", \"velocity\", \"density\", \"pressure\"]`", "Per-particle fields written to each frame.",
        Presence::optional,
@@ -69,6 +69,11 @@ std::span<const Key<scene::Output>> output_keys() {
        [](const ValueReader& values, const Node& value, scene::Output& output) {
          read_section(values, value, recovery_keys(), output.recovery.emplace());
        }},
+      {"vtk", "boolean", "–", "`false`",
+       "Also write each frame as a VTK file, `frames_NNNNNN.vtu`, and the collection `frames.pvd` that names them "
+       "with their times, for tools that do not read XDMF ([docs/output.md](output.md#vtk-files)).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Output& output) { output.vtk = values.boolean(value); }},
   }};
   return keys;
 }

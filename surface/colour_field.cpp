@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "field_tile.hpp"
+#include "kernel_table.hpp"
 #include "particle_blocks.hpp"
 #include "tide/core/kernels/cubic_spline.hpp"
 #include "tide/core/parallel.hpp"
@@ -31,29 +34,103 @@ CubicSplineKernel<D> field_kernel(const FieldSettings& settings) {
   return CubicSplineKernel<D>(static_cast<Real>(settings.smoothing_ratio * settings.particle_spacing));
 }
 
-template <int D>
-GridPoint<D> first_point_of(const GridPoint<D>& block, int block_points) {
-  GridPoint<D> g{};
-  for (int d = 0; d < D; ++d) g[d] = block[d] * block_points;
-  return g;
-}
-
-/// Every block within one block of an occupied one: where c can be non-zero.
+/// Every block within one block of an occupied one: where c can be non-zero. Dilated one axis at a
+/// time: a step of one block along an axis adds the same amount to every packed key (coordinates
+/// stay within their bits: colour_field leaves a block of margin each side), so each shifted copy
+/// stays sorted and the union is two merges, not a sort.
 template <int D>
 std::vector<std::uint64_t> blocks_in_reach(const std::vector<std::uint64_t>& occupied) {
-  std::vector<std::uint64_t> reached;
-  reached.reserve(occupied.size() * (D == 2 ? 9 : 27));
-  for (const std::uint64_t key : occupied) {
-    const GridPoint<D> block = unpack<D>(key);
-    for_each_neighbour_offset<D>([&](const GridPoint<D>& offset) {
-      GridPoint<D> neighbour{};
-      for (int d = 0; d < D; ++d) neighbour[d] = block[d] + offset[d];
-      reached.push_back(pack<D>(neighbour));
-    });
+  std::vector<std::uint64_t> reached = occupied, below, above, merged;
+  for (int d = 0; d < D; ++d) {
+    const std::uint64_t step = std::uint64_t(1) << (d * key_bits_per_axis);
+    below.resize(reached.size());
+    above.resize(reached.size());
+    std::transform(reached.begin(), reached.end(), below.begin(), [&](std::uint64_t key) { return key - step; });
+    std::transform(reached.begin(), reached.end(), above.begin(), [&](std::uint64_t key) { return key + step; });
+    merged.clear();
+    std::merge(below.begin(), below.end(), reached.begin(), reached.end(), std::back_inserter(merged));
+    reached.clear();
+    std::merge(merged.begin(), merged.end(), above.begin(), above.end(), std::back_inserter(reached));
+    reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
   }
-  std::sort(reached.begin(), reached.end());
-  reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
   return reached;
+}
+
+/// The tiles (field_tile.hpp) that hold the stored blocks, ascending.
+template <int D>
+std::vector<std::uint64_t> tiles_of(const std::vector<std::uint64_t>& block_keys) {
+  std::vector<std::uint64_t> tiles;
+  tiles.reserve(block_keys.size());
+  for (const std::uint64_t key : block_keys) {
+    GridPoint<D> block = unpack<D>(key);
+    for (int d = 0; d < D; ++d) block[d] /= tile_blocks;
+    tiles.push_back(pack<D>(block));
+  }
+  std::sort(tiles.begin(), tiles.end());
+  tiles.erase(std::unique(tiles.begin(), tiles.end()), tiles.end());
+  return tiles;
+}
+
+/// Adds to `tile` every particle of the blocks within one block of it, in key order (rows of
+/// blocks along the first axis are runs of consecutive keys).
+template <int D>
+void add_particles_near(FieldTile<D>& tile, const GridPoint<D>& tile_coordinates,
+                        const ParticlesByBlock<D>& particles) {
+  std::array<int, D> rows{};
+  rows[0] = 1;
+  for (int d = 1; d < D; ++d) rows[d] = tile_blocks + 2;
+  std::array<int, D> row{};
+  while (true) {
+    GridPoint<D> first{}, last{};
+    bool below = false;  // a row below block 0 holds no particles (colour_field leaves a margin)
+    for (int d = 0; d < D; ++d) {
+      first[d] = last[d] = tile_coordinates[d] * tile_blocks - 1 + row[d];
+      below = below || (d > 0 && first[d] < 0);
+    }
+    last[0] = first[0] + tile_blocks + 1;
+    first[0] = std::max<std::int64_t>(first[0], 0);
+    const auto begin = std::lower_bound(particles.block_keys.begin(), particles.block_keys.end(), pack<D>(first));
+    const auto end = std::upper_bound(begin, particles.block_keys.end(), pack<D>(last));
+    const auto k = static_cast<std::size_t>(begin - particles.block_keys.begin());
+    const auto k_end = static_cast<std::size_t>(end - particles.block_keys.begin());
+    for (std::size_t j = particles.block_starts[k]; !below && j < particles.block_starts[k_end]; ++j)
+      tile.add(particles.positions[j]);
+    int d = 1;
+    for (; d < D && row[d] == rows[d] - 1; ++d) row[d] = 0;
+    if (d == D) return;
+    ++row[d];
+  }
+}
+
+/// Whether every block within two blocks of the tile holds at least `least` particles: then the
+/// field is taken to exceed the surface level on the tile and one cell beyond it (the support is
+/// one block), and the tile is not summed (docs/rendering.md, "Speed").
+template <int D>
+bool surrounded_by_fluid(const GridPoint<D>& tile_coordinates, const ParticlesByBlock<D>& particles,
+                         std::size_t least) {
+  constexpr int margin = 2;
+  constexpr int span = tile_blocks + 2 * margin;
+  std::array<int, D> row{};
+  while (true) {
+    GridPoint<D> first{};
+    for (int d = 0; d < D; ++d) {
+      first[d] = tile_coordinates[d] * tile_blocks - margin + row[d];
+      if (first[d] < 0) return false;  // colour_field's empty margin
+    }
+    const auto& keys = particles.block_keys;
+    const auto k = static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), pack<D>(first)) - keys.begin());
+    for (std::size_t i = 0; i < std::size_t(span); ++i) {
+      GridPoint<D> block = first;
+      block[0] += static_cast<std::int64_t>(i);
+      if (k + i >= keys.size() || keys[k + i] != pack<D>(block) ||
+          particles.block_starts[k + i + 1] - particles.block_starts[k + i] < least)
+        return false;
+    }
+    int d = 1;
+    for (; d < D && row[d] == span - 1; ++d) row[d] = 0;
+    if (d == D) return true;
+    ++row[d];
+  }
 }
 
 }  // namespace
@@ -70,10 +147,11 @@ SparseGrid<D> colour_field(std::span<const double> positions, const FieldSetting
   const std::size_t count = positions.size() / D;
   if (count == 0) return grid;
 
-  // One empty block of margin below the particles keeps every block coordinate of the reach ≥ 0.
+  // One empty block of margin below the particles, and a cell more against round-off, keeps every
+  // block coordinate of the reach ≥ 0 (points at the same places relative to the particles).
   const auto [lowest, highest] = bounds_of<D>(positions);
   for (int d = 0; d < D; ++d) {
-    grid.origin[d] = lowest[d] - support;
+    grid.origin[d] = lowest[d] - support - grid.cell_size;
     if ((highest[d] - grid.origin[d]) / grid.cell_size + 3.0 * grid.block_points >= double(max_points_per_axis))
       throw std::invalid_argument("surface reconstruction: the particles span " +
                                   std::to_string(highest[d] - lowest[d]) + " m along axis " + std::to_string(d) +
@@ -85,62 +163,28 @@ SparseGrid<D> colour_field(std::span<const double> positions, const FieldSetting
   const std::size_t points_per_block = grid.points_per_block();
   grid.values.assign(grid.block_keys.size() * points_per_block, 0.0);
   const double volume = particle_volume<D>(settings);
-  const double support_squared = support * support;
+  const KernelTable table([&](double r) { return volume * kernel.value(static_cast<Real>(r)); }, support);
 
-  for_each_particle(grid.block_keys.size(), [&](std::size_t b) {
-    const GridPoint<D> block = unpack<D>(grid.block_keys[b]);
-    std::array<std::pair<std::size_t, std::size_t>, D == 2 ? 9 : 27> ranges{};
-    std::size_t range_count = 0;
-    for_each_neighbour_offset<D>([&](const GridPoint<D>& offset) {
-      GridPoint<D> neighbour{};
-      for (int d = 0; d < D; ++d) neighbour[d] = block[d] + offset[d];
-      const auto range = particles_in_block(particles, pack<D>(neighbour));
-      if (range.first != range.second) ranges[range_count++] = range;
-    });
-    // Each particle adds to the block's points in the box of its support, so a point sums its
-    // particles in the order of the ranges: the same for any thread count.
-    double* values = grid.values.data() + b * points_per_block;
-    const GridPoint<D> first = first_point_of<D>(block, grid.block_points);
-    const Point<D> block_origin = grid.position(first);
-    const int last = grid.block_points - 1;
-    for (std::size_t r = 0; r < range_count; ++r) {
-      for (std::size_t j = ranges[r].first; j < ranges[r].second; ++j) {
-        const Point<D>& x = particles.positions[j];
-        std::array<int, D> low{}, high{}, local{};
-        bool empty = false;
-        for (int d = 0; d < D; ++d) {
-          low[d] = std::max(0, static_cast<int>(std::ceil((x[d] - support - block_origin[d]) / grid.cell_size)));
-          high[d] = std::min(last, static_cast<int>(std::floor((x[d] + support - block_origin[d]) / grid.cell_size)));
-          empty = empty || low[d] > high[d];
-        }
-        if (empty) continue;
-        // Row by row along the first axis, the other axes' share of the distance taken once a row.
-        const auto coordinate = [&](int d, int index) {
-          return grid.origin[d] + static_cast<double>(first[d] + index) * grid.cell_size;
-        };
-        local = low;
-        while (true) {
-          double row_squared = 0;
-          std::size_t row_offset = 0;
-          for (int d = D - 1; d >= 1; --d) {
-            const double delta = coordinate(d, local[d]) - x[d];
-            row_squared += delta * delta;
-            row_offset =
-                (row_offset + static_cast<std::size_t>(local[d])) * static_cast<std::size_t>(grid.block_points);
-          }
-          for (int i = low[0]; row_squared < support_squared && i <= high[0]; ++i) {
-            const double delta = coordinate(0, i) - x[0];
-            const double distance_squared = row_squared + delta * delta;
-            if (distance_squared < support_squared)
-              values[row_offset + static_cast<std::size_t>(i)] +=
-                  volume * kernel.value(static_cast<Real>(std::sqrt(distance_squared)));
-          }
-          int d = 1;
-          for (; d < D && local[d] == high[d]; ++d) local[d] = low[d];
-          if (d == D) break;
-          ++local[d];
-        }
+  // Tile by tile, each point summing its particles in the order of their blocks' keys and, within
+  // a block, of their indices: the same for any thread count. A tile deep in the fluid holds the
+  // interior value instead: the fewest particles a block of the fluid's lattice holds, with every
+  // block around the tile at least that full, marks one.
+  const auto lattice_points_per_axis = static_cast<std::size_t>(std::floor(support / settings.particle_spacing));
+  std::size_t least = 1;
+  for (int d = 0; d < D; ++d) least *= std::max<std::size_t>(lattice_points_per_axis, 1);
+  const double inside = interior_colour<D>(settings);
+  const std::vector<std::uint64_t> tiles = tiles_of<D>(grid.block_keys);
+  parallel_blocks(tiles.size(), 1, [&](std::size_t begin, std::size_t end) {
+    FieldTile<D> tile(grid, table);
+    for (std::size_t t = begin; t < end; ++t) {
+      const GridPoint<D> coordinates = unpack<D>(tiles[t]);
+      if (surrounded_by_fluid<D>(coordinates, particles, least)) {
+        tile.start(coordinates, inside);
+      } else {
+        tile.start(coordinates, 0.0);
+        add_particles_near<D>(tile, coordinates, particles);
       }
+      tile.store_into(grid);
     }
   });
   return grid;

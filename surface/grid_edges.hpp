@@ -4,6 +4,7 @@
 // them: the edge from point g one cell along `axis` is the key pack(g) · 4 + axis, the same in every
 // cell that shares the edge, so cells agree on the vertex there without talking to each other.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -47,21 +48,37 @@ class BlockCorners {
     std::size_t count = 1;
     for (int d = 0; d < D; ++d) count *= static_cast<std::size_t>(side_);
     values_.resize(count);
-    for (std::size_t n = 0; n < count; ++n) {
-      GridPoint<D> local{};
-      std::size_t rest = n;
+    // Row by row along the first axis: block_points values from the block the row lies in (along
+    // the other axes, coordinate block_points is the first layer of the block above), the last
+    // from the block above that one along the first axis.
+    const int n = grid.block_points;
+    std::size_t at = 0;
+    std::array<int, D> row{};
+    while (true) {
       unsigned above = 0;
-      for (int d = 0; d < D; ++d) {
-        local[d] = static_cast<std::int64_t>(rest % static_cast<std::size_t>(side_));
-        rest /= static_cast<std::size_t>(side_);
-        if (local[d] == grid.block_points) {
-          above |= 1u << d;
-          local[d] = 0;
-        }
+      std::size_t offset = 0;
+      for (int d = D - 1; d >= 1; --d) {
+        const bool up = row[d] == n;
+        above |= static_cast<unsigned>(up) << d;
+        offset = (offset + static_cast<std::size_t>(up ? 0 : row[d])) * static_cast<std::size_t>(n);
       }
       const double* source = neighbours_[above];
-      values_[n] = source == nullptr ? 0.0 : source[grid.offset_in_block(local)];
+      const double* next = neighbours_[above | 1u];
+      for (int x = 0; x < n; ++x)
+        values_[at++] = source == nullptr ? 0.0 : source[offset + static_cast<std::size_t>(x)];
+      values_[at++] = next == nullptr ? 0.0 : next[offset];
+      int d = 1;
+      for (; d < D && row[d] == n; ++d) row[d] = 0;
+      if (d == D) break;
+      ++row[d];
     }
+  }
+
+  /// Whether `level` lies between two of the values: some above it, some not; otherwise no cell
+  /// of the block is crossed.
+  bool crossed(double level) const {
+    const auto [lowest, highest] = std::minmax_element(values_.begin(), values_.end());
+    return *lowest <= level && *highest > level;
   }
 
   /// The value at `local`, each coordinate in [0, block_points].

@@ -17,6 +17,7 @@ using EdgeTriangle = std::array<std::uint64_t, 3>;
 /// next to an unstored one are beyond the support of every particle), so no cell is missed.
 std::vector<EdgeTriangle> block_triangles(const SparseGrid<3>& grid, std::size_t block, double iso_level) {
   const BlockCorners<3> corners(grid, grid.block_keys[block]);
+  if (!corners.crossed(iso_level)) return {};
   const GridPoint<3> block_coordinates = unpack<3>(grid.block_keys[block]);
   const int n = grid.block_points;
   std::vector<EdgeTriangle> triangles;

@@ -18,6 +18,7 @@ struct Segment {
 
 std::vector<Segment> block_segments(const SparseGrid<2>& grid, std::size_t block, double iso_level) {
   const BlockCorners<2> corners(grid, grid.block_keys[block]);
+  if (!corners.crossed(iso_level)) return {};
   const GridPoint<2> block_coordinates = unpack<2>(grid.block_keys[block]);
   const int n = grid.block_points;
   const auto key_of = [&](int x, int y, int edge) {

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
-#include <unistd.h>
 #include <cctype>
 #include <cstdint>
 #include <filesystem>
@@ -18,166 +17,17 @@
 #include <type_traits>
 #include <vector>
 
+#include "output_directory_test.hpp"
+#include "sample_particles.hpp"
+#include "xml_reader.hpp"
+
 namespace tide::io {
 namespace {
 
 namespace fs = std::filesystem;
-
-// ---------------------------------------------------------------------------------------------
-// A small strict XML reader: enough for XDMF (elements, attributes, text, comments, the prolog),
-// and a malformed document is an error rather than something to skip over.
-
-struct XmlElement {
-  std::string name;
-  std::map<std::string, std::string> attributes;
-  std::string text;
-  std::vector<XmlElement> children;
-
-  std::vector<const XmlElement*> all(std::string_view child_name) const {
-    std::vector<const XmlElement*> found;
-    for (const XmlElement& child : children)
-      if (child.name == child_name) found.push_back(&child);
-    return found;
-  }
-  const XmlElement& only(std::string_view child_name) const {
-    const auto found = all(child_name);
-    if (found.size() != 1)
-      throw std::runtime_error("<" + name + "> has " + std::to_string(found.size()) + " <" + std::string(child_name) +
-                               "> children, expected one");
-    return *found.front();
-  }
-  const std::string& attribute(const std::string& key) const {
-    const auto it = attributes.find(key);
-    if (it == attributes.end()) throw std::runtime_error("<" + name + "> has no attribute " + key);
-    return it->second;
-  }
-};
-
-class XmlParser {
- public:
-  explicit XmlParser(std::string_view text) : text_(text) {}
-
-  XmlElement parse_document() {
-    skip_prolog_and_comments();
-    XmlElement root = parse_element();
-    skip_prolog_and_comments();
-    if (position_ != text_.size()) fail("content after the root element");
-    return root;
-  }
-
- private:
-  bool at(std::string_view token) const { return text_.substr(position_).starts_with(token); }
-
-  void skip_space() {
-    while (position_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[position_]))) ++position_;
-  }
-
-  void skip_past(std::string_view terminator) {
-    const std::size_t end = text_.find(terminator, position_);
-    if (end == std::string_view::npos) fail("missing " + std::string(terminator));
-    position_ = end + terminator.size();
-  }
-
-  void expect(char c) {
-    if (position_ >= text_.size() || text_[position_] != c) fail(std::string("expected '") + c + "'");
-    ++position_;
-  }
-
-  void skip_prolog_and_comments() {
-    for (skip_space(); at("<?") || at("<!"); skip_space()) skip_past(at("<?") ? "?>" : at("<!--") ? "-->" : ">");
-  }
-
-  std::string parse_name() {
-    const std::size_t start = position_;
-    while (position_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[position_])) ||
-                                        std::string_view("_:-.").find(text_[position_]) != std::string_view::npos))
-      ++position_;
-    if (position_ == start) fail("expected a name");
-    return std::string(text_.substr(start, position_ - start));
-  }
-
-  std::string unescape(std::string_view raw) {
-    static const std::map<std::string_view, char> entities = {
-        {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
-    std::string text;
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      if (raw[i] != '&') {
-        text += raw[i];
-        continue;
-      }
-      const std::size_t end = raw.find(';', i);
-      const auto entity = end == std::string_view::npos ? entities.end() : entities.find(raw.substr(i, end - i + 1));
-      if (entity == entities.end()) fail("unknown entity");
-      text += entity->second;
-      i = end;
-    }
-    return text;
-  }
-
-  XmlElement parse_element() {
-    expect('<');
-    XmlElement element;
-    element.name = parse_name();
-    for (;;) {
-      skip_space();
-      if (at("/>")) {
-        position_ += 2;
-        return element;
-      }
-      if (at(">")) {
-        ++position_;
-        break;
-      }
-      const std::string key = parse_name();
-      skip_space();
-      expect('=');
-      skip_space();
-      const char quote = position_ < text_.size() ? text_[position_] : '\0';
-      if (quote != '"' && quote != '\'') fail("unquoted attribute value");
-      const std::size_t end = text_.find(quote, ++position_);
-      if (end == std::string_view::npos) fail("unterminated attribute value");
-      if (!element.attributes.emplace(key, unescape(text_.substr(position_, end - position_))).second)
-        fail("attribute " + key + " given twice");
-      position_ = end + 1;
-    }
-    for (;;) {
-      const std::size_t tag = text_.find('<', position_);
-      if (tag == std::string_view::npos) fail("<" + element.name + "> is never closed");
-      element.text += unescape(text_.substr(position_, tag - position_));
-      position_ = tag;
-      if (at("<!--")) {
-        skip_past("-->");
-      } else if (at("</")) {
-        position_ += 2;
-        if (parse_name() != element.name) fail("</...> does not match <" + element.name + ">");
-        skip_space();
-        expect('>');
-        break;
-      } else {
-        element.children.push_back(parse_element());
-      }
-    }
-    const auto first = element.text.find_first_not_of(" \t\r\n");
-    element.text = first == std::string::npos
-                       ? std::string()
-                       : element.text.substr(first, element.text.find_last_not_of(" \t\r\n") - first + 1);
-    return element;
-  }
-
-  [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error("not well-formed XML at offset " + std::to_string(position_) + ": " + what);
-  }
-
-  std::string_view text_;
-  std::size_t position_ = 0;
-};
-
-XmlElement parse_xml_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return XmlParser(text.str()).parse_document();
-}
+using testing_support::parse_xml_file;
+using testing_support::sample_set;
+using testing_support::XmlElement;
 
 // ---------------------------------------------------------------------------------------------
 // Helpers.
@@ -243,28 +93,6 @@ void expect_data_item_matches_dataset(const XmlElement& item, const fs::path& di
   }
 }
 
-/// Scalar, vector and index fields whose values differ per particle, component and frame.
-template <int D>
-ParticleSet<D> sample_set(std::size_t count, int frame) {
-  ParticleSet<D> set;
-  set.append(count);
-  const auto density = set.add_scalar("density");
-  const auto pressure = set.add_scalar("pressure");
-  const auto velocity = set.add_vector("velocity");
-  const auto phase = set.add_index("phase");
-  const auto position = set[set.position()];
-  for (std::size_t i = 0; i < count; ++i) {
-    set[density][i] = Real(1000.0 + 0.37 * double(i) + frame);
-    set[pressure][i] = Real(-0.5 * double(i) + 1.0 / 3.0 + frame);
-    set[phase][i] = Index(i % 3);
-    for (int d = 0; d < D; ++d) {
-      position.component[d][i] = Real(0.1 * double(i) + d + 0.01 * frame);
-      set[velocity].component[d][i] = Real(0.01 * double(i) * (d + 1) - frame);
-    }
-  }
-  return set;
-}
-
 std::set<std::string> directory_listing(const fs::path& directory) {
   std::set<std::string> names;
   for (const auto& entry : fs::directory_iterator(directory)) names.insert(entry.path().filename().string());
@@ -275,32 +103,8 @@ std::set<std::string> directory_listing(const fs::path& directory) {
 // Tests, for 2D and 3D sets.
 
 template <class Dimension>
-class FrameWriterTest : public ::testing::Test {
- protected:
-  static constexpr int D = Dimension::value;
-
-  void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(test->test_suite_name()) + "_" + test->name() + "_" + std::to_string(::getpid());
-    for (char& c : name)
-      if (c == '/') c = '_';
-    directory = fs::path(::testing::TempDir()) / ("tide_" + name);
-    fs::remove_all(directory);
-  }
-  void TearDown() override { fs::remove_all(directory); }
-
-  fs::path directory;
-};
-
-struct DimensionName {
-  template <class Dimension>
-  static std::string GetName(int) {
-    return std::to_string(Dimension::value) + "D";
-  }
-};
-
-using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
-TYPED_TEST_SUITE(FrameWriterTest, Dimensions, DimensionName);
+using FrameWriterTest = testing_support::OutputDirectoryTest<Dimension>;
+TYPED_TEST_SUITE(FrameWriterTest, testing_support::Dimensions, testing_support::DimensionName);
 
 TYPED_TEST(FrameWriterTest, XdmfNamesEveryDatasetWithItsShapeAndType) {
   constexpr int D = TestFixture::D;

@@ -1,7 +1,7 @@
 // `tide run --resume` as a user meets it (issue 39): a run killed with SIGKILL at random moments
-// and resumed each time from its checkpoint ends with the same frames, probes.csv, recovery.csv
-// and XDMF file, byte for byte, as the run that was never stopped; a checkpoint of another scene,
-// precision or format, or none at all, is refused with exit code 2.
+// and resumed each time from its checkpoint ends with the same frames, probes.csv, recovery.csv,
+// XDMF file and VTK files (.vtu, .pvd), byte for byte, as the run that was never stopped; a checkpoint of another
+// scene, precision or format, or none at all, is refused with exit code 2.
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -55,7 +55,7 @@ class ResumeCommand : public testing::Test {
   "walls": {"layers": 3, "container": {"min": [0, 0], "max": [0.4, 0.3], "open_top": true}},
   "probes": [{"name": "P1", "type": "pressure", "position": [0.4, 0.01]},
              {"name": "H1", "type": "water_height", "position": [0.05, 0]}],
-  "output": {"probe_interval": 0.005, "recovery": {"material": "water", "region": {"min": [0, 0], "max": [0.1, 0.3]}}},
+  "output": {"probe_interval": 0.005, "vtk": true, "recovery": {"material": "water", "region": {"min": [0, 0], "max": [0.1, 0.3]}}},
   "time": {"start": 0, "end": )"
                         << end << R"(, "output_interval": 0.02}
 })";
@@ -101,7 +101,12 @@ void expect_same_frames(const fs::path& straight, const fs::path& resumed) {
           << name;
     }
   }
-  for (const char* file : {"frames.xdmf", "probes.csv", "recovery.csv"})
+  for (const fs::path& frame : a) {
+    const fs::path vtu = fs::path(frame).replace_extension(".vtu").filename();
+    EXPECT_EQ(file_text(straight / vtu), file_text(resumed / vtu)) << vtu;
+  }
+  // frames.pvd names each frame once, as frames.xdmf does.
+  for (const char* file : {"frames.xdmf", "frames.pvd", "probes.csv", "recovery.csv"})
     EXPECT_EQ(file_text(straight / file), file_text(resumed / file)) << file;
 }
 

@@ -246,6 +246,7 @@ struct Output {
   std::vector<std::string> fields{"position", "velocity", "density", "pressure"};
   double probe_interval = 0.01;  // s between probe rows; the reader sets time.output_interval when the file has none
   std::optional<Recovery> recovery;  // written to recovery.csv every probe_interval
+  bool vtk = false;                  // each frame also as a VTK file, and a .pvd collection
 };
 
 /// What a probe measures (docs/scenes.md, "probes"): the pressure at its position, or the height
