@@ -243,6 +243,28 @@ TEST_F(ValidationReport, MarkdownHasARowPerRunAndTheCaseInformation) {
   EXPECT_NE(page.find("](validation/poiseuille.png)"), std::string::npos);
 }
 
+// Hand-written notes in <page>-notes/<case>.md end the case's section, so that a regenerated page
+// keeps them; a case without a notes file gets none.
+TEST_F(ValidationReport, MarkdownEndsACaseWithItsHandWrittenNotes) {
+  EXPECT_EQ(notes_directory(directory_ / "validation.md"), directory_ / "validation-notes");
+  fs::create_directories(directory_ / "validation-notes");
+  const std::string note = "### Measured by hand\n\nA table kept across regenerations.\n";
+  std::ofstream(directory_ / "validation-notes" / "poiseuille.md") << note;
+  const std::vector<StudyRun> runs = ladder("wcsph", 2.0);
+  Case other = synthetic_case();
+  other.name = "couette";
+  other.title = "Couette flow start-up";
+  const std::vector<Case> cases{synthetic_case(), other};
+  write_markdown(directory_ / "validation.md", StudyContext{}, cases, runs, "validation");
+  const std::string page = read_text(directory_ / "validation.md");
+
+  const std::size_t at = page.find(note);
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_EQ(page.find(note, at + 1), std::string::npos) << "once";
+  EXPECT_LT(page.find("](validation/poiseuille_resolution.png)\n\n" + note), at + 1) << "after the figures";
+  EXPECT_EQ(page.compare(at + note.size(), 25, "\n## Couette flow start-up"), 0) << "before the next case";
+}
+
 TEST_F(ValidationReport, GnuplotDrawsNonEmptyPngs) {
   if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
   std::vector<StudyRun> runs = ladder("wcsph", 2.0);

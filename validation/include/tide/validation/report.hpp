@@ -96,9 +96,14 @@ struct StudyContext {
 /// threads from tide::thread_count(), precision from tide::Real, today's date. `build` is left empty.
 StudyContext current_context(std::string command);
 
+/// Where the hand-written notes of the page `page` are kept: `<page's folder>/<page stem>-notes/`
+/// (docs/validation.md: docs/validation-notes/).
+std::filesystem::path notes_directory(const std::filesystem::path& page);
+
 /// Writes the markdown page: an introduction (`context`), then per case in `cases` its title,
 /// reference, metric definitions, resolution meaning, a table of its runs, its convergence
-/// orders and its figures, linked as `<image_directory>/<case>.png` relative to the page.
+/// orders and its figures, linked as `<image_directory>/<case>.png` relative to the page, and
+/// last the case's hand-written notes, `notes_directory(path)/<case>.md`, where that file exists.
 /// The file is replaced atomically.
 void write_markdown(const std::filesystem::path& path, const StudyContext& context, std::span<const Case> cases,
                     std::span<const StudyRun> runs, const std::string& image_directory);
