@@ -57,14 +57,16 @@ std::span<const Key<scene::Crowd>> crowd_keys() {
          read_section(values, value, crowd_speed_keys(), crowd.desired_speed);
        }},
       {"comfortable_density", "number > 0", "persons/m²", "`2`",
-       "ρ_c: up to it agents feel no uneasiness; the end of Still's stable flow band (1–2.5 persons/m²).",
+       "ρ_c: up to it agents feel no uneasiness (in the density of the other agents, ρ − W(0)); the end of Still's "
+       "stable flow band (1–2.5 persons/m²).",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
          crowd.comfortable_density = values.number(value, positive);
        }},
       {"stiffness", "number > 0", "m⁴/s²", "`1`",
-       "K of the uneasiness p = K max(ρ − ρ_c, 0); sqrt(K) is the speed of a small density disturbance. Not "
-       "calibrated ([crowds.md](crowds.md#parameters)).",
+       "K of the uneasiness p = K max(ρ − W(0) − ρ_c, 0), on the density of the other agents "
+       "([crowds.md](crowds.md#uneasiness-and-the-agents-own-term)); sqrt(K) is the speed of a small density "
+       "disturbance. Not calibrated ([crowds.md](crowds.md#parameters)).",
        Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Crowd& crowd) {
          crowd.stiffness = values.number(value, positive);

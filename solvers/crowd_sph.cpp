@@ -145,11 +145,17 @@ std::size_t CrowdSph::search_and_sum_density() {
   auto pressure = agents_[fields_.pressure];
   const Real comfortable = static_cast<Real>(scene_.crowd->comfortable_density);
   const Real stiffness = static_cast<Real>(scene_.crowd->stiffness);
+  // The agent's own term of ρ_i, m_i W(0) with m_i = 1 person (2.2 persons/m² for Wendland C2 at
+  // h = 0.5 m, above ρ_c): the density of the others, ρ_i − W(0), is what the equation of state
+  // sees, so that an agent alone or in a sparse crowd feels no uneasiness. For agents at
+  // independent uniform places of density n its mean is n ∫W = n (Campbell's theorem for the
+  // Poisson field seen from one of its points, Slivnyak–Mecke), where ρ_i itself reads n + W(0).
+  const Real own = kernel_.value(0);
   // Uneasiness: none up to the comfortable density, rising linearly above it (the clamped
   // linear equation of state of WCSPH, p = c² (ρ − ρ0) with p ≥ 0, Monaghan 1994, here with the
   // comfortable density as ρ0, after van Toll et al. 2021, Sec. 4.2).
   passes::density_summation<2>(kernel_, agents_, fields_, interactions_, [&](std::size_t i, Real rho) {
-    pressure[i] = stiffness * std::max(rho - comfortable, Real(0));
+    pressure[i] = stiffness * std::max(rho - own - comfortable, Real(0));
   });
   return removed;
 }

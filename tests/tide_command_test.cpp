@@ -462,7 +462,7 @@ TEST_F(TideCommand, CrowdRoomEvacuationRunsAndCountsEveryoneOut) {
     if (!line.empty() && line[0] != '#') last = line;
   }
   EXPECT_EQ(header, "time,inside,out_door,mean_density,mean_speed,peak_density,peak_x,peak_y,peak_time");
-  // Measured: all 100 out by 79 s of the 120 (the agents slow for those ahead, docs/crowds.md).
+  // Measured: all 100 out by 84 s of the 120 (the agents slow for those ahead, docs/crowds.md).
   EXPECT_NE(last.find(",0,100,0,0,"), std::string::npos) << last;
   EXPECT_TRUE(fs::exists(out / "frames.xdmf"));
 }

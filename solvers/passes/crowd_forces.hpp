@@ -90,15 +90,21 @@ void crowd_acceleration(const RuntimeKernel<2>& kernel, const CrowdForceSettings
   const auto p = agents[f.pressure];
   const auto v0 = agents[desired_speed];
   const Real contact_distance = 2 * settings.body_radius;
+  const Real support = kernel.support_radius();
   for_each_fluid_particle<2>(interactions, x, VectorOutput<2>{acceleration}, [&](std::size_t i, const auto& neighbors) {
     Vector<2> a = Vector<2>::Zero();
     const Vector<2> desired = direction(i, x[i]);
     Vector<2> turned = desired;
     const Real p_over_rho2 = p[i] / (rho[i] * rho[i]);
+    const bool uneasy = p[i] > 0;
     neighbors.fluid_pairs([&](std::size_t j, const Vector<2>& x_ij, Real r2) {
       if (!(r2 > 0)) return;
       const Real r = std::sqrt(r2);
-      a -= (p_over_rho2 + p[j] / (rho[j] * rho[j])) * kernel.derivative_over_r(r) * x_ij;
+      // Most pairs of the list (reach 2.5 m) lie beyond the kernel's support, and below the
+      // comfortable density both pressures are zero: the pressure term is then exactly zero, and
+      // neither the kernel nor the division is evaluated.
+      if (r < support && (uneasy || p[j] > 0))
+        a -= (p_over_rho2 + p[j] / (rho[j] * rho[j])) * kernel.derivative_over_r(r) * x_ij;
       a += settings.repulsion(r - contact_distance) / r * x_ij;
       turned += settings.steering(r) / r * x_ij;
     });

@@ -70,6 +70,7 @@ Curve read_reference(const std::string& file, int x_column, int y_column) {
     std::istringstream fields(line);
     std::string field;
     while (std::getline(fields, field, ',')) values.push_back(field.empty() ? NAN : std::stod(field));
+    if (line.back() == ',') values.push_back(NAN);  // an empty last column (getline does not return it)
     const auto needed = static_cast<std::size_t>(std::max(x_column, y_column));
     if (values.size() <= needed) throw std::runtime_error(path + ": a row has fewer columns than expected");
     if (std::isnan(values[static_cast<std::size_t>(y_column)])) continue;

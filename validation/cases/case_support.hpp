@@ -31,7 +31,8 @@ scene::Scene water_tank(int dimension, double width, double depth, double rim, d
                         const scene::Material& water, const Variant& variant);
 
 /// Reads columns `x_column` and `y_column` of a reference CSV in validation/data ('#' lines are
-/// its source header; the first other line names the columns).
+/// its source header; the first other line names the columns; an empty field is a missing value,
+/// whose row `y_column` skips).
 Curve read_reference(const std::string& file, int x_column = 0, int y_column = 1);
 
 /// The pressure-solve sweeps of a run: evaluations of the pressure's velocity and density error,

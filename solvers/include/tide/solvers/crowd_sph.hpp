@@ -20,13 +20,13 @@ namespace tide {
 
 /// People as SPH particles (solver.scheme "crowd", docs/crowds.md), 2D: each agent is a particle
 /// of one person's mass in the number density, ρ_i = Σ_j W_ij in persons/m² (van Toll et al.
-/// 2021, Sec. 4); an uneasiness pressure p = K max(ρ − ρ_c, 0) above the comfortable density ρ_c
-/// pushes agents from crowded places to less crowded ones; each agent relaxes toward its desired
-/// velocity, its own desired speed along the navigation field's direction to the nearest exit (or
-/// its group's fixed heading);
-/// agents and walls repel one another at short range (passes/crowd_forces.hpp). Agents entering
-/// an exit region are removed and counted. Walls are the scene's wall particles, as contacts.
-/// Symplectic Euler steps; every pass gathers, so results are bitwise the same for any thread count.
+/// 2021, Sec. 4); an uneasiness pressure p = K max(ρ − W(0) − ρ_c, 0) above the comfortable density
+/// ρ_c of the other agents (the agent's own term W(0) left out) pushes agents from crowded places to less crowded ones;
+/// each agent relaxes toward its desired velocity, its own desired speed along the navigation field's direction to the
+/// nearest exit (or its group's fixed heading); agents and walls repel one another at short range
+/// (passes/crowd_forces.hpp). Agents entering an exit region are removed and counted. Walls are the scene's wall
+/// particles, as contacts. Symplectic Euler steps; every pass gathers, so results are bitwise the same for any thread
+/// count.
 class CrowdSph final : public Simulation<2> {
  public:
   explicit CrowdSph(const scene::Scene& scene);
