@@ -22,6 +22,7 @@ const std::vector<Case>& cases() {
                                      neutral_body_case(false),
                                      neutral_body_case(true),
                                      settling_cylinder_case(),
+                                     rising_block_case(),
                                      crowd_fundamental_diagram_case(),
                                      crowd_bottleneck_case(),
                                      crowd_single_agent_case(),

@@ -110,6 +110,7 @@ Case lid_driven_cavity_case(int reynolds);
 Case floating_box_case(int dimension);
 Case neutral_body_case(bool ball);
 Case settling_cylinder_case();
+Case rising_block_case();
 Case crowd_fundamental_diagram_case();
 Case crowd_bottleneck_case();
 Case crowd_single_agent_case();
