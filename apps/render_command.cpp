@@ -130,18 +130,21 @@ constexpr render::Colour water = {0x4a, 0x90, 0xd9};
 constexpr render::Colour wall_grey = {0x9a, 0x9a, 0x9a};
 constexpr render::Colour body_brown = {0x8b, 0x5a, 0x2b};
 
-/// The wall particles a 3D picture shows: those not beyond the fluid's box on a side that faces the
-/// camera, which would hide the fluid (the near walls of a tank are cut away; the floor and the far
-/// walls stay).
+/// The wall particles a 3D picture shows: those beyond the fluid's box on a side that faces the
+/// camera, and on none that faces away, would stand between the camera and the fluid and are left
+/// out (the near walls of a tank, a lid); the floor and the far walls, beyond the box on a side
+/// facing away, stay along their whole length.
 std::vector<double> walls_not_in_front(const std::vector<double>& walls, const render::Camera& camera,
                                        const RunExtent& extent) {
   std::vector<double> kept;
   for (std::size_t i = 0; i + 3 <= walls.size(); i += 3) {
-    bool in_front = false;
-    for (std::size_t d = 0; d < 3; ++d)
-      in_front = in_front || (camera.forward[d] < 0 && walls[i + d] > extent.fluid_highest[d]) ||
-                 (camera.forward[d] > 0 && walls[i + d] < extent.fluid_lowest[d]);
-    if (!in_front)
+    bool near_side = false, far_side = false;
+    for (std::size_t d = 0; d < 3; ++d) {
+      const bool above = walls[i + d] > extent.fluid_highest[d], below = walls[i + d] < extent.fluid_lowest[d];
+      near_side = near_side || (camera.forward[d] < 0 && above) || (camera.forward[d] > 0 && below);
+      far_side = far_side || (camera.forward[d] > 0 && above) || (camera.forward[d] < 0 && below);
+    }
+    if (!near_side || far_side)
       kept.insert(kept.end(), walls.begin() + static_cast<std::ptrdiff_t>(i),
                   walls.begin() + static_cast<std::ptrdiff_t>(i + 3));
   }

@@ -188,9 +188,10 @@ TEST_F(RenderCommand, WallsAndBodiesAreDrawnIn2D) {
   EXPECT_GT(body_last - body_first, 100.0);
 }
 
-// In 3D the walls are shaded grey spheres, those beyond the fluid on a side facing the camera
-// (which looks from +x, −y, +z) left out: a floor under the ball is drawn, a wall at x = 0.4 m in
-// front of it is not (and the ball behind it shows).
+// In 3D the walls are shaded grey spheres, those beyond the fluid's box only on sides facing the
+// camera (which looks from +x, −y, +z) left out: a floor under the ball is drawn (beyond the box
+// below, a side facing away, even where it reaches beyond it in +x), a wall at x = 0.4 m in front
+// of the ball and within its box along y and z is not (and the ball behind it shows).
 TEST_F(RenderCommand, WallsIn3DLeaveOutThoseInFrontOfTheFluid) {
   const fs::path floor_run = write_run<3>(1);
   write_walls<3>(floor_run, "walls", wall_plane<3>(2, -0.3, 0.4), 1, 0.0);
@@ -201,7 +202,7 @@ TEST_F(RenderCommand, WallsIn3DLeaveOutThoseInFrontOfTheFluid) {
   fs::rename(floor_run, near_run);
   for (const auto& entry : fs::directory_iterator(near_run))
     if (entry.path().filename().string().rfind("walls", 0) == 0 || entry.is_directory()) fs::remove_all(entry.path());
-  write_walls<3>(near_run, "walls", wall_plane<3>(0, 0.4, 0.4), 1, 0.0);
+  write_walls<3>(near_run, "walls", wall_plane<3>(0, 0.4, 0.16), 1, 0.0);
   ASSERT_EQ(run_tide("render --size 640x360 " + near_run.string()).exit_code, 0);
   const render::Image image = testing_support::read_png(near_run / "render" / "frame_000000.png");
   EXPECT_EQ(grey_pixels(image), 0);
