@@ -303,6 +303,13 @@ TEST(SurfaceFiles, PlyAndObjReadBackAsWritten) {
         EXPECT_NEAR(read.vertices[v][d], mesh.vertices[v][d], 1e-6) << name;  // PLY stores floats
   }
   EXPECT_FALSE(std::filesystem::exists(directory / ".ball.ply.tmp"));
+
+  // A rewrite that fails (a directory where its hidden temporary file must go) throws and leaves
+  // the good mesh whole, as a killed tide surface would.
+  std::filesystem::create_directories(directory / ".ball.ply.tmp" / "blocker");
+  EXPECT_THROW(write_ply(directory / "ball.ply", scene::TriangleMesh{}), std::runtime_error);
+  EXPECT_EQ(io::read_mesh_file(directory / "ball.ply").triangles, mesh.triangles);
+  std::filesystem::remove_all(directory / ".ball.ply.tmp");
 }
 
 TEST(SurfaceFiles, OutlineCsvListsEveryPoint) {
