@@ -78,6 +78,7 @@ int main(int argc, char** argv) {
   run->add_option("--out", run_options.output_directory, "output directory (default: runs/<scene name>)");
   run->add_option("--until", run_options.until, "end time in s, overriding the scene's");
   run->add_flag("--quiet", run_options.quiet, "no progress output");
+  run->add_flag("--vtk", run_options.vtk, "also write each frame as a VTK file (.vtu, .pvd), as output.vtk does");
   run->add_option("--checkpoint-every", run_options.checkpoint_every,
                   "write <out>/checkpoint.h5 every T s of simulated time (and after the last step)")
       ->check(CLI::PositiveNumber);
@@ -156,6 +157,9 @@ int main(int argc, char** argv) {
       ->add_option("--smooth", surface_options.smoothing_iterations,
                    "Taubin smoothing iterations, which keep the volume (3D; default: 0, none)")
       ->check(CLI::NonNegativeNumber);
+  bool render_surfaces = false;
+  surface->add_flag("--render", render_surfaces,
+                    "3D: then draw the same frames' surfaces as PNG (and MP4 with ffmpeg): tide render --surface");
   surface->add_option("--threads", threads, "number of worker threads (default: all cores)")
       ->check(CLI::PositiveNumber);
 
@@ -240,7 +244,16 @@ int main(int argc, char** argv) {
     if (*stress) return tide::app::stress(stress_options);
     if (*oil) return tide::app::oil_study(oil_options);
     if (*render) return tide::app::render_frames(render_options);
-    if (*surface) return tide::app::reconstruct_surfaces(surface_options);
+    if (*surface) {
+      const int status = tide::app::reconstruct_surfaces(surface_options);
+      if (status != tide::app::exit_ok || !render_surfaces) return status;
+      // The same frames drawn as the shaded surface into RUN/render (and its MP4).
+      tide::app::RenderOptions surface_pictures;
+      surface_pictures.input = surface_options.input;
+      surface_pictures.input.output_directory.clear();
+      surface_pictures.surface = true;
+      return tide::app::render_frames(surface_pictures);
+    }
     if (*scene_keys) return tide::app::write_scene_keys(keys_docs, keys_dictionary);
     return info();
   } catch (const std::exception& error) {

@@ -6,12 +6,14 @@
 #include <iostream>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "movie.hpp"
 #include "run_command.hpp"
 #include "run_frames.hpp"
+#include "run_walls.hpp"
 #include "tide/core/parallel.hpp"
 #include "tide/io/frame_writer.hpp"
 #include "tide/render/camera.hpp"
@@ -71,42 +73,93 @@ PictureSize parse_size(const std::string& text) {
   return {width, height};
 }
 
-/// What every frame shares: the box the particles stay in, the range of the field, the spacing.
+/// What every frame shares: the box the particles stay in (the fluid's, and with the walls and
+/// bodies), the range of the field, the spacing.
 struct RunExtent {
   render::Point3 lowest;
   render::Point3 highest;
+  render::Point3 fluid_lowest;
+  render::Point3 fluid_highest;
   double low = std::numeric_limits<double>::infinity();
   double high = -std::numeric_limits<double>::infinity();
   int dimension = 0;
   std::string label;
 };
 
-RunExtent measure(const std::vector<FrameFile>& frames, const std::string& field) {
+/// Grows [lowest, highest] to hold `positions` (row-major, `dimension` per point).
+void grow_box(render::Point3& lowest, render::Point3& highest, const std::vector<double>& positions, int dimension) {
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    const auto d = k % static_cast<std::size_t>(dimension);
+    lowest[d] = std::min(lowest[d], positions[k]);
+    highest[d] = std::max(highest[d], positions[k]);
+  }
+}
+
+/// The extent of the selected frames; with `walls`, the box holds their walls and bodies too.
+RunExtent measure(const std::vector<FrameFile>& frames, const std::string& field, const RunWalls* walls) {
   RunExtent extent;
   const double infinity = std::numeric_limits<double>::infinity();
-  extent.lowest = {infinity, infinity, infinity};
-  extent.highest = {-infinity, -infinity, -infinity};
+  extent.fluid_lowest = {infinity, infinity, infinity};
+  extent.fluid_highest = {-infinity, -infinity, -infinity};
   for (const FrameFile& file : frames) {
     const ColouredFrame frame = read_coloured_frame(file.path, field);
     const FramePositions& positions = frame.positions;
     extent.dimension = positions.dimension;
     extent.label = frame.label;
-    for (std::size_t k = 0; k < positions.values.size(); ++k) {
-      const auto d = k % static_cast<std::size_t>(positions.dimension);
-      extent.lowest[d] = std::min(extent.lowest[d], positions.values[k]);
-      extent.highest[d] = std::max(extent.highest[d], positions.values[k]);
-    }
+    grow_box(extent.fluid_lowest, extent.fluid_highest, positions.values, positions.dimension);
     for (const double value : frame.values) {
       extent.low = std::min(extent.low, value);
       extent.high = std::max(extent.high, value);
     }
   }
+  if (extent.dimension == 2) extent.fluid_lowest[2] = extent.fluid_highest[2] = 0;
+  extent.lowest = extent.fluid_lowest;
+  extent.highest = extent.fluid_highest;
+  for (const FrameFile& file : frames) {
+    if (walls == nullptr || walls->empty()) break;
+    const WallParticles particles = walls->at(file.number);
+    grow_box(extent.lowest, extent.highest, particles.walls, extent.dimension);
+    grow_box(extent.lowest, extent.highest, particles.bodies, extent.dimension);
+  }
   if (extent.dimension == 2) extent.lowest[2] = extent.highest[2] = 0;
   return extent;
 }
 
-/// The colour of a surface drawn by --surface.
+/// The colour of a surface drawn by --surface, of the walls and of the rigid bodies.
 constexpr render::Colour water = {0x4a, 0x90, 0xd9};
+constexpr render::Colour wall_grey = {0x9a, 0x9a, 0x9a};
+constexpr render::Colour body_brown = {0x8b, 0x5a, 0x2b};
+
+/// The wall particles a 3D picture shows: those beyond the fluid's box on a side that faces the
+/// camera, and on none that faces away, would stand between the camera and the fluid and are left
+/// out (the near walls of a tank, a lid); the floor and the far walls, beyond the box on a side
+/// facing away, stay along their whole length.
+std::vector<double> walls_not_in_front(const std::vector<double>& walls, const render::Camera& camera,
+                                       const RunExtent& extent) {
+  std::vector<double> kept;
+  for (std::size_t i = 0; i + 3 <= walls.size(); i += 3) {
+    bool near_side = false, far_side = false;
+    for (std::size_t d = 0; d < 3; ++d) {
+      const bool above = walls[i + d] > extent.fluid_highest[d], below = walls[i + d] < extent.fluid_lowest[d];
+      near_side = near_side || (camera.forward[d] < 0 && above) || (camera.forward[d] > 0 && below);
+      far_side = far_side || (camera.forward[d] > 0 && above) || (camera.forward[d] < 0 && below);
+    }
+    if (!near_side || far_side)
+      kept.insert(kept.end(), walls.begin() + static_cast<std::ptrdiff_t>(i),
+                  walls.begin() + static_cast<std::ptrdiff_t>(i + 3));
+  }
+  return kept;
+}
+
+/// The walls in grey and the bodies in brown, as discs of the particles' size (2D) or shaded
+/// spheres against `depth` (3D, the walls in front of the fluid left out).
+void draw_walls(render::Image& image, const render::Camera& camera, const RunExtent& extent,
+                const WallParticles& particles, double radius, std::vector<double>& depth) {
+  const std::vector<double> walls =
+      extent.dimension == 3 ? walls_not_in_front(particles.walls, camera, extent) : particles.walls;
+  render::draw_particles(image, camera, extent.dimension, walls, wall_grey, radius, depth);
+  render::draw_particles(image, camera, extent.dimension, particles.bodies, body_brown, radius, depth);
+}
 
 }  // namespace
 
@@ -116,13 +169,15 @@ int render_frames(const RenderOptions& options) {
   PictureSize size;
   std::optional<render::ColourScale> scale;
   RunExtent extent;
+  std::optional<RunWalls> walls;
   double spacing = 0;
   try {
     const std::vector<FrameFile> all_frames = list_frames(options.input.run_directory);
     frames = select_frames(all_frames, options.input.frames);
     size = parse_size(options.size);
     scale.emplace(render::ColourScale{render::Colormap(options.colormap), 0, 1});
-    extent = measure(frames, field);
+    walls.emplace(options.input.run_directory);
+    extent = measure(frames, field, options.heatmap ? nullptr : &*walls);
     if (options.surface && extent.dimension != 3)
       throw std::invalid_argument("--surface draws the surfaces of 3D runs; tide surface writes a 2D run's outlines");
     if (options.heatmap && extent.dimension != 2)
@@ -160,23 +215,27 @@ int render_frames(const RenderOptions& options) {
     for (std::size_t f = begin; f < end; ++f) {
       const FrameFile& file = frames[f];
       ColouredFrame frame;
+      WallParticles wall_particles;
       try {
         const std::lock_guard<std::mutex> lock(reading);
         frame = read_coloured_frame(file.path, field);
+        if (!options.heatmap) wall_particles = walls->at(file.number);
       } catch (const std::exception& error) {
         read_errors[f] = error.what();
         continue;
       }
       render::Image image(size.width, size.height, {0xff, 0xff, 0xff});
+      std::vector<double> depth = extent.dimension == 3 ? render::empty_depth(camera) : std::vector<double>();
+      if (!options.heatmap) draw_walls(image, camera, extent, wall_particles, spacing / 2, depth);
       if (options.surface) {
         const scene::TriangleMesh mesh =
             surface::reconstruct_surface(frame.positions.values, {.particle_spacing = spacing});
-        render::draw_mesh(image, camera, mesh, water);
+        render::draw_mesh(image, camera, mesh, water, depth);
       } else if (options.heatmap) {
         render::draw_density_heatmap(image, camera, frame.positions.values, options.smoothing_length, *scale);
       } else {
         render::draw_particles(image, camera, frame.positions.dimension, frame.positions.values, frame.values, *scale,
-                               spacing / 2);
+                               spacing / 2, depth);
       }
       if (!options.surface) render::draw_colour_bar(image, bar, *scale, extent.label);
       render::draw_time_stamp(image, frame.positions.time);

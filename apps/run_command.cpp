@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +18,7 @@
 #include <vector>
 
 #include "progress.hpp"
+#include "run_frames.hpp"
 #include "run_outputs.hpp"
 #include "tide/io/checkpoint_file.hpp"
 #include "tide/io/crowd_writer.hpp"
@@ -200,7 +200,7 @@ class MovingWallFrames {
       if (!interactions.contact(k).moves()) continue;
       contacts_.push_back(k);
       writers_.emplace_back(directory, std::vector<std::string>{"position", "surface_velocity", "pressure"},
-                            run_name(interactions.contact(k).name()), vtk);
+                            wall_series_name(interactions.contact(k).name()), vtk);
     }
   }
 
@@ -221,23 +221,22 @@ class MovingWallFrames {
   }
 
  private:
-  // "walls.obstacles[2]" -> "walls_obstacles_2": letters and digits kept, runs of others one '_'.
-  static std::string run_name(const std::string& contact) {
-    std::string name;
-    for (const char c : contact) {
-      if (std::isalnum(static_cast<unsigned char>(c))) {
-        name += c;
-      } else if (!name.empty() && name.back() != '_') {
-        name += '_';
-      }
-    }
-    while (!name.empty() && name.back() == '_') name.pop_back();
-    return name;
-  }
-
   std::vector<std::size_t> contacts_;
   std::vector<io::FrameWriter<D>> writers_;
 };
+
+/// The walls that do not move, written once as frame 0 of one run of frames per contact
+/// (walls_000000.h5, free_slip_walls_000000.h5, ...) so that tide render can draw them.
+template <int D>
+void write_fixed_walls(const Simulation<D>& simulation, const std::filesystem::path& directory, io::VtkFiles vtk) {
+  const Interactions<D>& interactions = simulation.interactions();
+  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
+    const Contact<D>& contact = interactions.contact(k);
+    if (contact.moves() || contact.particles().empty()) continue;
+    io::FrameWriter<D>(directory, {"position"}, wall_series_name(contact.name()), vtk)
+        .write(contact.particles(), simulation.time(), simulation.step_count());
+  }
+}
 
 /// Everything `tide run` keeps between two steps, into a checkpoint and back: the simulation's
 /// state and the run's outputs so far (frames named in the XDMF files, series rows, schedules,
@@ -345,6 +344,7 @@ int run(const scene::Scene& scene, const RunOptions& options, const std::filesys
   };
   if (options.resume.empty()) {
     writer.write(simulation->fluid(), simulation->time(), 0);
+    write_fixed_walls(*simulation, output_directory, vtk);
     wall_frames.write(*simulation);
     record_series();
   }
@@ -489,6 +489,7 @@ int run_scene(const RunOptions& given) {
     }
     scene->time.end = *options.until;
   }
+  if (options.vtk) scene->output.vtk = true;
   const std::filesystem::path output_directory = run_output_directory(options);
   return scene->dimension == 2 ? run<2>(*scene, options, output_directory) : run<3>(*scene, options, output_directory);
 }

@@ -19,6 +19,7 @@ struct RunOptions {
   std::filesystem::path output_directory;  // empty: runs/<scene name>
   std::optional<double> until;             // overrides the scene's end time
   bool quiet = false;
+  bool vtk = false;                        // VTK files beside the HDF5 frames, as the scene's output.vtk
   std::optional<double> checkpoint_every;  // s of simulated time between checkpoints
   std::optional<double> checkpoint_wall;   // s of wall-clock time between checkpoints
   std::filesystem::path resume;            // a run directory to continue from its checkpoint

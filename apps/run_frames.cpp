@@ -1,6 +1,7 @@
 #include "run_frames.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <limits>
@@ -61,6 +62,19 @@ std::filesystem::path picture_directory(const FrameSelection& selection, const s
       selection.output_directory.empty() ? selection.run_directory / folder : selection.output_directory;
   std::filesystem::create_directories(directory);
   return directory;
+}
+
+std::string wall_series_name(const std::string& contact) {
+  std::string name;
+  for (const char c : contact) {
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      name += c;
+    } else if (!name.empty() && name.back() != '_') {
+      name += '_';
+    }
+  }
+  while (!name.empty() && name.back() == '_') name.pop_back();
+  return name;
 }
 
 std::string numbered_file_name(const std::string& stem, std::size_t number, const std::string& extension) {

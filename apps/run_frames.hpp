@@ -48,6 +48,11 @@ double particle_spacing(const FrameSelection& selection, const FrameFile& first_
 /// selection.output_directory, or else `folder` in the run directory; created if it is not there.
 std::filesystem::path picture_directory(const FrameSelection& selection, const std::string& folder);
 
+/// The stem of the frame files of a wall contact, from its name or key path: "walls.obstacles[2]"
+/// -> "walls_obstacles_2", "free-slip walls" -> "free_slip_walls" (letters and digits kept, runs
+/// of others one '_').
+std::string wall_series_name(const std::string& contact);
+
 /// "<stem>_000012<extension>".
 std::string numbered_file_name(const std::string& stem, std::size_t number, const std::string& extension);
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "lighting.hpp"
+#include "tide/render/particle_splats.hpp"
 
 namespace tide::render {
 namespace {
@@ -33,10 +33,14 @@ std::vector<Point3> vertex_normals(const scene::TriangleMesh& mesh) {
 }  // namespace
 
 void draw_mesh(Image& image, const Camera& camera, const scene::TriangleMesh& mesh, Colour colour) {
+  std::vector<double> depth = empty_depth(camera);
+  draw_mesh(image, camera, mesh, colour, depth);
+}
+
+void draw_mesh(Image& image, const Camera& camera, const scene::TriangleMesh& mesh, Colour colour,
+               std::vector<double>& depth) {
   const std::vector<Point3> normals = vertex_normals(mesh);
   const PixelRegion& region = camera.region;
-  std::vector<double> depth(static_cast<std::size_t>(region.width) * region.height,
-                            std::numeric_limits<double>::infinity());
   for (const auto& triangle : mesh.triangles) {
     Point3 corner[3];
     for (int k = 0; k < 3; ++k) corner[k] = camera.project(mesh.vertices[triangle[k]]);

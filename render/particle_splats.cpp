@@ -8,19 +8,19 @@
 #include "lighting.hpp"
 
 namespace tide::render {
-void draw_particles(Image& image, const Camera& camera, int dimension, std::span<const double> positions,
-                    std::span<const double> values, const ColourScale& scale, double radius) {
+namespace {
+
+template <class ColourOf>
+void draw_discs(Image& image, const Camera& camera, int dimension, std::span<const double> positions, std::size_t count,
+                const ColourOf& colour_of, double radius, std::vector<double>& depth) {
   const double radius_pixels = std::max(1.0, radius * camera.pixels_per_metre);
   const int reach = static_cast<int>(std::ceil(radius_pixels));
   const PixelRegion& region = camera.region;
-  std::vector<double> depth(dimension == 3 ? static_cast<std::size_t>(region.width) * region.height : 0,
-                            std::numeric_limits<double>::infinity());
-  const std::size_t count = values.size();
   for (std::size_t i = 0; i < count; ++i) {
     const Point3 p = {positions[i * dimension], positions[i * dimension + 1],
                       dimension == 3 ? positions[i * dimension + 2] : 0.0};
     const Point3 pixel = camera.project(p);
-    const Colour colour = scale.of(values[i]);
+    const Colour colour = colour_of(i);
     const int cx = static_cast<int>(std::floor(pixel[0])), cy = static_cast<int>(std::floor(pixel[1]));
     for (int y = std::max(cy - reach, region.top); y <= std::min(cy + reach, region.top + region.height - 1); ++y) {
       for (int x = std::max(cx - reach, region.left); x <= std::min(cx + reach, region.left + region.width - 1); ++x) {
@@ -41,6 +41,34 @@ void draw_particles(Image& image, const Camera& camera, int dimension, std::span
       }
     }
   }
+}
+
+}  // namespace
+
+std::vector<double> empty_depth(const Camera& camera) {
+  return std::vector<double>(static_cast<std::size_t>(camera.region.width) * camera.region.height,
+                             std::numeric_limits<double>::infinity());
+}
+
+void draw_particles(Image& image, const Camera& camera, int dimension, std::span<const double> positions,
+                    std::span<const double> values, const ColourScale& scale, double radius) {
+  std::vector<double> depth = dimension == 3 ? empty_depth(camera) : std::vector<double>();
+  draw_particles(image, camera, dimension, positions, values, scale, radius, depth);
+}
+
+void draw_particles(Image& image, const Camera& camera, int dimension, std::span<const double> positions,
+                    std::span<const double> values, const ColourScale& scale, double radius,
+                    std::vector<double>& depth) {
+  draw_discs(
+      image, camera, dimension, positions, values.size(), [&](std::size_t i) { return scale.of(values[i]); }, radius,
+      depth);
+}
+
+void draw_particles(Image& image, const Camera& camera, int dimension, std::span<const double> positions, Colour colour,
+                    double radius, std::vector<double>& depth) {
+  draw_discs(
+      image, camera, dimension, positions, positions.size() / static_cast<std::size_t>(dimension),
+      [&](std::size_t) { return colour; }, radius, depth);
 }
 
 }  // namespace tide::render

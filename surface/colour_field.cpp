@@ -71,30 +71,63 @@ std::vector<std::uint64_t> tiles_of(const std::vector<std::uint64_t>& block_keys
   return tiles;
 }
 
-/// Adds to `tile` every particle of the blocks within one block of it, in key order (rows of
-/// blocks along the first axis are runs of consecutive keys).
+/// Particle blocks around a tile (local coordinates −1 … tile_blocks along each axis, stored from
+/// 0, first axis fastest) and whether each must be added to it.
+inline constexpr int nearby_side = tile_blocks + 2;
 template <int D>
-void add_particles_near(FieldTile<D>& tile, const GridPoint<D>& tile_coordinates,
-                        const ParticlesByBlock<D>& particles) {
+using NearbyBlocks = std::array<bool, D == 2 ? nearby_side * nearby_side : nearby_side * nearby_side * nearby_side>;
+
+/// The particle blocks whose particles reach a block of the tile that is summed (stored and not
+/// taken as inside): within one block of one, since the support is one block.
+template <int D>
+NearbyBlocks<D> blocks_to_add(const std::array<std::size_t, FieldTile<D>::block_count>& slots,
+                              const std::array<bool, FieldTile<D>::block_count>& inside) {
+  NearbyBlocks<D> needed{};
+  int slot = 0;
+  FieldTile<D>::template for_each_index<D>(tile_blocks, [&](const std::array<int, D>& inner) {
+    const auto n = static_cast<std::size_t>(slot++);
+    if (slots[n] == no_block || inside[n]) return;
+    // inner + 1 + offset, offset in {−1, 0, 1}^D, in the padded local coordinates.
+    FieldTile<D>::template for_each_index<D>(3, [&](const std::array<int, D>& offset) {
+      std::size_t at = 0;
+      for (int d = D - 1; d >= 0; --d) at = at * nearby_side + static_cast<std::size_t>(inner[d] + offset[d]);
+      needed[at] = true;
+    });
+  });
+  return needed;
+}
+
+/// Adds to `tile` the particles of the blocks within one block of it that `needed` marks, in key
+/// order (rows of blocks along the first axis are runs of consecutive keys). A particle of a block
+/// left out adds exactly zero to every summed block's points, so theirs are the full sums.
+template <int D>
+void add_particles_near(FieldTile<D>& tile, const GridPoint<D>& tile_coordinates, const ParticlesByBlock<D>& particles,
+                        const NearbyBlocks<D>& needed) {
   std::array<int, D> rows{};
   rows[0] = 1;
-  for (int d = 1; d < D; ++d) rows[d] = tile_blocks + 2;
+  for (int d = 1; d < D; ++d) rows[d] = nearby_side;
   std::array<int, D> row{};
+  const std::int64_t row_start = tile_coordinates[0] * tile_blocks - 1;
   while (true) {
     GridPoint<D> first{}, last{};
     bool below = false;  // a row below block 0 holds no particles (colour_field leaves a margin)
-    for (int d = 0; d < D; ++d) {
+    std::size_t row_at = 0;
+    for (int d = D - 1; d >= 0; --d) {
       first[d] = last[d] = tile_coordinates[d] * tile_blocks - 1 + row[d];
       below = below || (d > 0 && first[d] < 0);
+      row_at = row_at * nearby_side + static_cast<std::size_t>(row[d]);
     }
     last[0] = first[0] + tile_blocks + 1;
     first[0] = std::max<std::int64_t>(first[0], 0);
     const auto begin = std::lower_bound(particles.block_keys.begin(), particles.block_keys.end(), pack<D>(first));
     const auto end = std::upper_bound(begin, particles.block_keys.end(), pack<D>(last));
-    const auto k = static_cast<std::size_t>(begin - particles.block_keys.begin());
     const auto k_end = static_cast<std::size_t>(end - particles.block_keys.begin());
-    for (std::size_t j = particles.block_starts[k]; !below && j < particles.block_starts[k_end]; ++j)
-      tile.add(particles.positions[j]);
+    for (auto k = static_cast<std::size_t>(begin - particles.block_keys.begin()); !below && k < k_end; ++k) {
+      const std::int64_t x = unpack<D>(particles.block_keys[k])[0] - row_start;
+      if (!needed[row_at + static_cast<std::size_t>(x)]) continue;
+      for (std::size_t j = particles.block_starts[k]; j < particles.block_starts[k + 1]; ++j)
+        tile.add(particles.positions[j]);
+    }
     int d = 1;
     for (; d < D && row[d] == rows[d] - 1; ++d) row[d] = 0;
     if (d == D) return;
@@ -102,35 +135,46 @@ void add_particles_near(FieldTile<D>& tile, const GridPoint<D>& tile_coordinates
   }
 }
 
-/// Whether every block within two blocks of the tile holds at least `least` particles: then the
-/// field is taken to exceed the surface level on the tile and one cell beyond it (the support is
-/// one block), and the tile is not summed (docs/rendering.md, "Speed").
+/// The blocks every block within two blocks of which holds at least `least` particles: the field
+/// is taken to exceed the surface level on them and one cell beyond (the support is one block),
+/// and they are not summed (docs/rendering.md, "Limits"). Ascending. Eroded one axis at a time: a
+/// block stays if the blocks up to two steps each way along the axis stayed at the axis before.
+/// Shifting every key by the same step keeps them sorted; a shift that would take a coordinate
+/// below zero drops the key (no block is there).
 template <int D>
-bool surrounded_by_fluid(const GridPoint<D>& tile_coordinates, const ParticlesByBlock<D>& particles,
-                         std::size_t least) {
+std::vector<std::uint64_t> blocks_inside(const ParticlesByBlock<D>& particles, std::size_t least) {
   constexpr int margin = 2;
-  constexpr int span = tile_blocks + 2 * margin;
-  std::array<int, D> row{};
-  while (true) {
-    GridPoint<D> first{};
-    for (int d = 0; d < D; ++d) {
-      first[d] = tile_coordinates[d] * tile_blocks - margin + row[d];
-      if (first[d] < 0) return false;  // colour_field's empty margin
+  std::vector<std::uint64_t> kept, previous, shifted, common;
+  for (std::size_t k = 0; k < particles.block_keys.size(); ++k)
+    if (particles.block_starts[k + 1] - particles.block_starts[k] >= least) kept.push_back(particles.block_keys[k]);
+  for (int d = 0; d < D; ++d) {
+    const std::uint64_t step = std::uint64_t(1) << (d * key_bits_per_axis);
+    previous = kept;
+    for (int s = -margin; s <= margin; ++s) {
+      if (s == 0) continue;
+      // Key k stays if k + s · step was kept: the previous keys shifted by −s steps.
+      shifted.clear();
+      for (const std::uint64_t key : previous) {
+        if (s > 0 && unpack<D>(key)[d] < s) continue;
+        shifted.push_back(s > 0 ? key - std::uint64_t(s) * step : key + std::uint64_t(-s) * step);
+      }
+      common.clear();
+      std::set_intersection(kept.begin(), kept.end(), shifted.begin(), shifted.end(), std::back_inserter(common));
+      kept.swap(common);
     }
-    const auto& keys = particles.block_keys;
-    const auto k = static_cast<std::size_t>(std::lower_bound(keys.begin(), keys.end(), pack<D>(first)) - keys.begin());
-    for (std::size_t i = 0; i < std::size_t(span); ++i) {
-      GridPoint<D> block = first;
-      block[0] += static_cast<std::int64_t>(i);
-      if (k + i >= keys.size() || keys[k + i] != pack<D>(block) ||
-          particles.block_starts[k + i + 1] - particles.block_starts[k + i] < least)
-        return false;
-    }
-    int d = 1;
-    for (; d < D && row[d] == span - 1; ++d) row[d] = 0;
-    if (d == D) return true;
-    ++row[d];
   }
+  return kept;
+}
+
+/// For each stored block of `grid`, whether it is one of `inside` (ascending, all stored).
+std::vector<bool> stored_inside(const std::vector<std::uint64_t>& stored, const std::vector<std::uint64_t>& inside) {
+  std::vector<bool> flags(stored.size(), false);
+  std::size_t b = 0;
+  for (const std::uint64_t key : inside) {
+    while (stored[b] != key) ++b;
+    flags[b] = true;
+  }
+  return flags;
 }
 
 }  // namespace
@@ -166,25 +210,40 @@ SparseGrid<D> colour_field(std::span<const double> positions, const FieldSetting
   const KernelTable table([&](double r) { return volume * kernel.value(static_cast<Real>(r)); }, support);
 
   // Tile by tile, each point summing its particles in the order of their blocks' keys and, within
-  // a block, of their indices: the same for any thread count. A tile deep in the fluid holds the
+  // a block, of their indices: the same for any thread count. A block deep in the fluid holds the
   // interior value instead: the fewest particles a block of the fluid's lattice holds, with every
-  // block around the tile at least that full, marks one.
+  // block within two of it at least that full, marks one; a tile all of whose blocks are such is
+  // not summed at all.
   const auto lattice_points_per_axis = static_cast<std::size_t>(std::floor(support / settings.particle_spacing));
   std::size_t least = 1;
   for (int d = 0; d < D; ++d) least *= std::max<std::size_t>(lattice_points_per_axis, 1);
   const double inside = interior_colour<D>(settings);
+  const std::vector<bool> inside_flags = stored_inside(grid.block_keys, blocks_inside<D>(particles, least));
   const std::vector<std::uint64_t> tiles = tiles_of<D>(grid.block_keys);
   parallel_blocks(tiles.size(), 1, [&](std::size_t begin, std::size_t end) {
     FieldTile<D> tile(grid, table);
+    std::array<std::size_t, FieldTile<D>::block_count> slots{};
+    std::array<bool, FieldTile<D>::block_count> inside_blocks{};
     for (std::size_t t = begin; t < end; ++t) {
       const GridPoint<D> coordinates = unpack<D>(tiles[t]);
-      if (surrounded_by_fluid<D>(coordinates, particles, least)) {
-        tile.start(coordinates, inside);
-      } else {
-        tile.start(coordinates, 0.0);
-        add_particles_near<D>(tile, coordinates, particles);
+      bool all_inside = true;
+      int slot = 0;
+      FieldTile<D>::template for_each_index<D>(tile_blocks, [&](const std::array<int, D>& inner) {
+        GridPoint<D> block{};
+        for (int d = 0; d < D; ++d) block[d] = coordinates[d] * tile_blocks + inner[d];
+        const std::uint64_t key = pack<D>(block);
+        const auto found = std::lower_bound(grid.block_keys.begin(), grid.block_keys.end(), key);
+        const bool stored = found != grid.block_keys.end() && *found == key;
+        const auto n = static_cast<std::size_t>(slot++);
+        slots[n] = stored ? static_cast<std::size_t>(found - grid.block_keys.begin()) : no_block;
+        inside_blocks[n] = stored && inside_flags[slots[n]];
+        all_inside = all_inside && (!stored || inside_blocks[n]);
+      });
+      if (!all_inside) {
+        tile.start(coordinates);
+        add_particles_near<D>(tile, coordinates, particles, blocks_to_add<D>(slots, inside_blocks));
       }
-      tile.store_into(grid);
+      tile.store_into(grid, slots, inside_blocks, inside);
     }
   });
   return grid;

@@ -14,13 +14,17 @@
 #include <cstring>
 #include <vector>
 
+#include "kernel_row.hpp"
 #include "kernel_table.hpp"
 #include "tide/surface/sparse_grid.hpp"
 
 namespace tide::surface {
 
 /// Blocks per tile along each axis.
-inline constexpr int tile_blocks = 4;
+inline constexpr int tile_blocks = 6;
+
+/// A tile's block that the grid does not store.
+inline constexpr std::size_t no_block = SIZE_MAX;
 
 template <int D>
 class FieldTile {
@@ -37,10 +41,9 @@ class FieldTile {
     values_.resize(points);
   }
 
-  /// Starts tile `tile` (tile coordinates) with every value `value`.
-  void start(const GridPoint<D>& tile, double value) {
-    tile_ = tile;
-    std::fill(values_.begin(), values_.end(), value);
+  /// Starts tile `tile` (tile coordinates) with every value zero.
+  void start(const GridPoint<D>& tile) {
+    std::fill(values_.begin(), values_.end(), 0.0);
     for (int d = 0; d < D; ++d)
       for (int i = 0; i < side_; ++i)
         coordinates_[index(d, i)] = grid_.origin[d] + static_cast<double>(tile[d] * side_ + i) * grid_.cell_size;
@@ -69,11 +72,9 @@ class FieldTile {
         row_squared += squared_[index(d, local[d])];
         row_offset = (row_offset + static_cast<std::size_t>(local[d])) * static_cast<std::size_t>(side_);
       }
-      if (row_squared < support_squared) {
-        double* row = values_.data() + row_offset;
-        const double* along = squared_.data();
-        for (int i = low[0]; i <= high[0]; ++i) row[i] += table_(row_squared + along[i]);
-      }
+      if (row_squared < support_squared)
+        add_kernel_row(table_, values_.data() + row_offset + low[0], squared_.data() + low[0], high[0] - low[0] + 1,
+                       row_squared);
       int d = 1;
       for (; d < D && local[d] == high[d]; ++d) local[d] = low[d];
       if (d == D) break;
@@ -81,17 +82,26 @@ class FieldTile {
     }
   }
 
-  /// Copies the tile's values into those of its blocks that `grid` stores.
-  void store_into(SparseGrid<D>& grid) const {
+  /// Blocks per tile.
+  static constexpr int block_count = D == 2 ? tile_blocks * tile_blocks : tile_blocks * tile_blocks * tile_blocks;
+
+  /// Copies the tile's values into its blocks that `grid` stores: block n of the tile (first axis
+  /// fastest) is grid block slots[n] (no_block: not stored), and one marked in `inside` gets
+  /// `inside_value` at every point instead.
+  void store_into(SparseGrid<D>& grid, const std::array<std::size_t, block_count>& slots,
+                  const std::array<bool, block_count>& inside, double inside_value) const {
     const int n = grid.block_points;
+    const std::size_t points = grid.points_per_block();
+    int slot = 0;
     for_each_index<D>(tile_blocks, [&](const std::array<int, D>& inner) {
-      GridPoint<D> block{};
-      for (int d = 0; d < D; ++d) block[d] = tile_[d] * tile_blocks + inner[d];
-      const std::uint64_t key = pack<D>(block);
-      const auto found = std::lower_bound(grid.block_keys.begin(), grid.block_keys.end(), key);
-      if (found == grid.block_keys.end() || *found != key) return;
-      double* target =
-          grid.values.data() + static_cast<std::size_t>(found - grid.block_keys.begin()) * grid.points_per_block();
+      const std::size_t b = slots[static_cast<std::size_t>(slot)];
+      const bool fill = inside[static_cast<std::size_t>(slot++)];
+      if (b == no_block) return;
+      double* target = grid.values.data() + b * points;
+      if (fill) {
+        std::fill(target, target + points, inside_value);
+        return;
+      }
       // Row by row along the first axis: n values from the tile's row at the block's place.
       std::array<int, D> rows_of_block{};
       rows_of_block[0] = 1;
@@ -106,7 +116,6 @@ class FieldTile {
     });
   }
 
- private:
   /// Calls f(index) for every index with 0 ≤ index[d] < extent[d], the first axis fastest.
   template <int Dim, class F>
   static void for_each_index(const std::array<int, Dim>& extent, F&& f) {
@@ -126,13 +135,13 @@ class FieldTile {
     for_each_index<Dim>(extents, f);
   }
 
+ private:
   std::size_t index(int d, int i) const { return static_cast<std::size_t>(d * side_ + i); }
 
   const SparseGrid<D>& grid_;
   const KernelTable& table_;
   int side_;
   int reach_;
-  GridPoint<D> tile_{};
   std::vector<double> coordinates_;
   std::vector<double> squared_;
   std::vector<double> values_;

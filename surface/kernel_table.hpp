@@ -31,6 +31,9 @@ class KernelTable {
   }
 
   double support_squared() const { return support_squared_; }
+  double steps_per_unit() const { return steps_per_unit_; }
+  double last_step() const { return last_step_; }
+  const double* values() const { return values_.data(); }
 
   /// V W(r) for r² = `distance_squared` ≥ 0: exactly zero from the support on.
   double operator()(double distance_squared) const {

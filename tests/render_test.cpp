@@ -53,6 +53,20 @@ TEST(PngFile, ReadsBackPixelForPixel) {
   EXPECT_FALSE(std::filesystem::exists(file.parent_path() / ".render_test.png.tmp"));
 }
 
+// A write that fails half-way (here: a directory where its hidden temporary file must go) throws
+// and leaves the picture that was there whole, as a killed render would.
+TEST(PngFile, FailedRewriteKeepsTheGoodPicture) {
+  const std::filesystem::path directory = std::filesystem::path(testing::TempDir()) / "png_rewrite_test";
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory);
+  const Image good(40, 30, {1, 2, 3});
+  write_png(directory / "frame.png", good);
+  std::filesystem::create_directories(directory / ".frame.png.tmp" / "blocker");
+  EXPECT_THROW(write_png(directory / "frame.png", Image(40, 30, {9, 9, 9})), std::runtime_error);
+  EXPECT_EQ(testing_support::read_png(directory / "frame.png").pixels, good.pixels);
+  std::filesystem::remove_all(directory);
+}
+
 TEST(Camera, FramesTheBoxWithAMargin) {
   const PixelRegion region = {10, 20, 400, 300};
   const Camera flat = camera_2d({0, 0, 0}, {2, 1, 0}, region);

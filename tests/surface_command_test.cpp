@@ -43,6 +43,16 @@ TEST_F(SurfaceCommand, ThreeDimensionalFramesBecomeClosedMeshes) {
   }
 }
 
+// --render: the meshes, then the same frames' surfaces as pictures in RUN/render, in one command.
+TEST_F(SurfaceCommand, RenderDrawsTheSurfacesToo) {
+  const fs::path run = write_run<3>(2);
+  const CommandResult result = run_tide("surface --render --frames 1 " + run.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(fs::exists(run / "surface" / "surface_000001.ply"));
+  EXPECT_TRUE(fs::exists(run / "render" / "frame_000001.png")) << result.output;
+  EXPECT_FALSE(fs::exists(run / "render" / "frame_000000.png")) << "frame 0 is outside --frames 1";
+}
+
 TEST_F(SurfaceCommand, SmoothedMeshesStayClosedAndKeepTheirVolume) {
   const fs::path run = write_run<3>(1);
   const fs::path plain = directory_ / "plain", smoothed = directory_ / "smoothed";

@@ -90,14 +90,14 @@ TEST(SurfaceReconstruction, MeshIsTheSameForOneAndTwoThreads) {
   EXPECT_EQ(one.triangles, two.triangles);
 }
 
-// The field is not summed on tiles deep in the fluid (colour_field.cpp, surrounded_by_fluid): a
-// ball of 32 particles per radius with a cavity of 3 Δx radius off its centre. Its blocks holding
-// the interior value exactly are the tiles taken as inside; the colour field summed directly over
-// the particles (the cubic spline itself) must exceed the surface level at every one of their
-// points, and the cavity must still be meshed: two closed surfaces. Measured: 1 280 blocks taken as
-// inside, the lowest direct value on them 0.9980 against the level 0.5004; volume −0.06% off the
-// ball's less the cavity's (bound: issue 38's 2%).
-TEST(SurfaceReconstruction, TilesTakenAsInsideHoldFluidAndTheCavityIsMeshed) {
+// The field is not summed on blocks deep in the fluid (colour_field.cpp, blocks_inside): a ball
+// of 32 particles per radius with a cavity of 3 Δx radius off its centre. Its blocks holding the
+// interior value exactly are the blocks taken as inside; the colour field summed directly over the
+// particles (the cubic spline itself) must exceed the surface level at every one of their points,
+// and the cavity must still be meshed: two closed surfaces. Measured: 4 094 blocks taken as inside
+// (1 280 when only whole tiles of 4^3 blocks were), the lowest direct value on them 0.9980 against
+// the level 0.5004; volume −0.06% off the ball's less the cavity's (bound: issue 38's 2%).
+TEST(SurfaceReconstruction, BlocksTakenAsInsideHoldFluidAndTheCavityIsMeshed) {
   const double spacing = 1.0, radius = 32.0, cavity_radius = 3.0;
   const std::array<double, 3> cavity = {8.0, -5.0, 3.0};
   std::vector<double> particles;
@@ -303,6 +303,13 @@ TEST(SurfaceFiles, PlyAndObjReadBackAsWritten) {
         EXPECT_NEAR(read.vertices[v][d], mesh.vertices[v][d], 1e-6) << name;  // PLY stores floats
   }
   EXPECT_FALSE(std::filesystem::exists(directory / ".ball.ply.tmp"));
+
+  // A rewrite that fails (a directory where its hidden temporary file must go) throws and leaves
+  // the good mesh whole, as a killed tide surface would.
+  std::filesystem::create_directories(directory / ".ball.ply.tmp" / "blocker");
+  EXPECT_THROW(write_ply(directory / "ball.ply", scene::TriangleMesh{}), std::runtime_error);
+  EXPECT_EQ(io::read_mesh_file(directory / "ball.ply").triangles, mesh.triangles);
+  std::filesystem::remove_all(directory / ".ball.ply.tmp");
 }
 
 TEST(SurfaceFiles, OutlineCsvListsEveryPoint) {

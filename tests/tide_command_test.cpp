@@ -236,6 +236,18 @@ TEST_F(TideCommand, RunRenderDrawsTheFrames) {
   for (const char* name : {"frame_000000.png", "frame_000001.png", "frame_000002.png"})
     EXPECT_TRUE(fs::exists(out / "render" / name)) << name << '\n' << result.output;
   EXPECT_FALSE(fs::exists(out / "render" / "frame_000003.png"));
+  EXPECT_FALSE(fs::exists(out / "frames_000000.vtu")) << "VTK files only when asked for";
+}
+
+// --vtk writes VTK files beside the HDF5 frames as the scene's output.vtk does, the fixed walls'
+// too (docs/output.md, "VTK files").
+TEST_F(TideCommand, RunVtkSwitchWritesVtkFiles) {
+  const fs::path out = directory_ / "out";
+  const CommandResult result =
+      run_tide("run --quiet --vtk --until 0.01 --out " + out.string() + " " + write_scene().string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  for (const char* name : {"frames_000000.vtu", "frames_000001.vtu", "frames.pvd", "walls_000000.vtu", "walls.pvd"})
+    EXPECT_TRUE(fs::exists(out / name)) << name;
 }
 
 TEST_F(TideCommand, RunWritesBodies) {
@@ -246,6 +258,9 @@ TEST_F(TideCommand, RunWritesBodies) {
   const CommandResult result = run_tide("run --quiet --out " + out.string() + " " + scene.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_TRUE(fs::exists(out / "walls_obstacles_0_000000.h5"));
+  // The fixed walls, once: what tide render draws in grey.
+  EXPECT_EQ(io::read_frame(out / "walls_000000.h5").datasets.at("position").shape[1], 2u);
+  EXPECT_FALSE(fs::exists(out / "walls_000001.h5"));
   std::ifstream csv(out / "bodies.csv");
   std::vector<std::string> lines;
   for (std::string line; std::getline(csv, line);) lines.push_back(line);

@@ -4,6 +4,8 @@
 // triangles around a vertex) interpolated across each triangle and lit by Lambert's cosine law
 // with an ambient term, the light of particle_splats.hpp; a depth buffer keeps the nearest surface.
 
+#include <vector>
+
 #include "tide/core/triangle_mesh.hpp"
 #include "tide/render/camera.hpp"
 #include "tide/render/image.hpp"
@@ -14,5 +16,10 @@ namespace tide::render {
 /// inside camera.region only. Both sides are lit, so an open mesh shows its inside too. A pixel
 /// takes the nearest triangle covering its centre, the earlier one on a tie.
 void draw_mesh(Image& image, const Camera& camera, const scene::TriangleMesh& mesh, Colour colour);
+
+/// The same against `depth` (particle_splats.hpp's empty_depth, or what particles drew there),
+/// updating it.
+void draw_mesh(Image& image, const Camera& camera, const scene::TriangleMesh& mesh, Colour colour,
+               std::vector<double>& depth);
 
 }  // namespace tide::render
