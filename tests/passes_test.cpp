@@ -771,12 +771,14 @@ void check_riemann_continuity_hydrostatic(int columns) {
                          lattice_sums<D>(kernel).gradient_sum * lattice_mass<D>(kernel) / rest_density;
   for (const Real rate : std::as_const(layer.fluid)[layer.f.density_rate]) ASSERT_NEAR(rate, 0, tolerance);
   // Without gravity in the pass, the same pressures diffuse: the rate is far from 0 at the free
-  // surface and beside the wall, where the linear pressure's pairs do not cancel.
+  // surface and beside the wall, where the linear pressure's pairs do not cancel (measured in
+  // float: 316 kg/m³/s, 740 times the rounding bound above; in double the bound is 10⁹ times
+  // smaller), so 100 times the bound tells the correction's work from rounding in both.
   passes::riemann_continuity<D>(kernel, {sound_speed, rest_density, Vector<D>::Zero()}, layer.fluid, layer.f,
                                 layer.interactions);
   Real largest = 0;
   for (const Real rate : std::as_const(layer.fluid)[layer.f.density_rate]) largest = std::max(largest, std::abs(rate));
-  EXPECT_GT(largest, 1000 * tolerance);
+  EXPECT_GT(largest, 100 * tolerance);
 }
 
 // Riemann-solver continuity of a layer at hydrostatic rest over a wall: no density change, so the
