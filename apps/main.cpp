@@ -103,7 +103,9 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->allow_extra_args(false)
       ->check(CLI::PositiveNumber);
-  validate->add_option("--schemes", validate_options.schemes, "comma-separated (default: not *_cg; --list names them)")
+  validate
+      ->add_option("--schemes", validate_options.schemes,
+                   "comma-separated (default: not *_cg or wcsph_riemann*; --list names them)")
       ->delimiter(',')
       ->allow_extra_args(false);
   validate->add_option("--kernels", validate_options.kernels, "comma-separated (default: wendland_c2,cubic_spline)")

@@ -56,6 +56,7 @@ std::vector<std::string_view> value_names() {
   add_names(names, density_method_names);
   add_names(names, viscosity_model_names);
   add_names(names, shifting_names);
+  add_names(names, riemann_solver_names);
   add_names(names, surface_tension_model_names);
   add_names(names, wall_slip_names);
   add_names(names, probe_type_names);

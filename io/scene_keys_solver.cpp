@@ -6,7 +6,7 @@
 namespace tide::io {
 
 std::span<const Key<scene::Solver>> solver_keys() {
-  static constexpr std::array<Key<scene::Solver>, 26> keys{{
+  static constexpr std::array<Key<scene::Solver>, 28> keys{{
       {"scheme", "string: `\"wcsph\"`, `\"dfsph\"`, `\"iisph\"` or `\"crowd\"`", "–", "`\"wcsph\"`",
        "Weakly compressible SPH, or an incompressible scheme: divergence-free SPH (Bender & Koschier 2015, 2017) or "
        "implicit incompressible SPH (Ihmsen et al. 2014); see [Incompressible schemes](#incompressible-schemes). "
@@ -38,6 +38,26 @@ std::span<const Key<scene::Solver>> solver_keys() {
        "δ of the δ-SPH diffusion term (Molteni & Colagrossi 2009; continuity density only).", Presence::optional,
        [](const ValueReader& values, const Node& value, scene::Solver& solver) {
          solver.delta_sph = values.number(value, non_negative);
+       }},
+      {"riemann_solver", "string: `\"none\"` or `\"low_dissipation\"`", "–", "`\"none\"`",
+       "`wcsph` with `continuity` density, one fluid, no rigid bodies or artificial stress: `low_dissipation` takes "
+       "each pair's pressure in the momentum equation and velocity in the continuity equation from a linearised "
+       "acoustic Riemann problem between the two particles (Zhang, Hu & Adams 2017), its dissipation limited to "
+       "approaching pairs; the continuity equation's Riemann term replaces δ-SPH (`delta_sph` is not used), with "
+       "the hydrostatic pressure difference taken out. Walls are right states with their extrapolated pressure, "
+       "moving with the wall. Measured on Buchner's dam break: [wall-pressure.md](wall-pressure.md).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Solver& solver) {
+         solver.riemann_solver = values.choice(value, riemann_solver_names);
+       }},
+      {"kernel_gradient_correction", "boolean", "–", "`false`",
+       "With `riemann_solver` `\"low_dissipation\"` only: the momentum equation's pressure term takes the "
+       "renormalised kernel gradient L_i ∇W_ij, L_i = (Σ_j V_j ∇W_ij ⊗ (x_j − x_i))⁻¹ (Bonet & Lok 1999), symmetrised "
+       "between fluid particles as ½ (L_i + L_j) ∇W_ij; L = I where det L⁻¹ < 0.1 (a splash). Costs one more "
+       "neighbour pass per step when on; nothing when off. Measured: [wall-pressure.md](wall-pressure.md).",
+       Presence::optional,
+       [](const ValueReader& values, const Node& value, scene::Solver& solver) {
+         solver.kernel_gradient_correction = values.boolean(value);
        }},
       {"viscosity", "string: `\"artificial\"` or `\"laminar\"`", "–", "`\"artificial\"`",
        "Monaghan artificial viscosity, or laminar viscosity (Morris, Fox & Zhu 1997) from `kinematic_viscosity`.",

@@ -35,6 +35,8 @@ inline constexpr std::array<Named<scene::SurfaceTensionModel>, 3> surface_tensio
      {"pairwise", scene::SurfaceTensionModel::pairwise}}};
 inline constexpr std::array<Named<scene::PressureSolver>, 2> pressure_solver_names{
     {{"jacobi", scene::PressureSolver::jacobi}, {"conjugate_gradients", scene::PressureSolver::conjugate_gradients}}};
+inline constexpr std::array<Named<scene::RiemannSolver>, 2> riemann_solver_names{
+    {{"none", scene::RiemannSolver::none}, {"low_dissipation", scene::RiemannSolver::low_dissipation}}};
 inline constexpr std::array<Named<scene::WallSlip>, 2> wall_slip_names{
     {{"no_slip", scene::WallSlip::no_slip}, {"free_slip", scene::WallSlip::free_slip}}};
 /// A mesh file's length unit, in metres.

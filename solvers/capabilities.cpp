@@ -77,6 +77,33 @@ void check_bodies(const scene::Scene& scene) {
   }
 }
 
+/// The Riemann-solver WCSPH (passes/riemann.hpp) is written for one fluid integrated by the
+/// continuity equation, with its own pressure term: not for number density, the artificial
+/// stress, or the bodies, whose force pass takes Monaghan's pressure term.
+void check_riemann(const scene::Scene& scene, std::size_t fluids) {
+  const scene::Solver& solver = scene.solver;
+  if (solver.kernel_gradient_correction && solver.riemann_solver == scene::RiemannSolver::none)
+    refuse(scene, "/solver/kernel_gradient_correction",
+           "false without solver.riemann_solver \"low_dissipation\" (the correction is implemented in its momentum "
+           "pass)",
+           "true");
+  if (solver.riemann_solver == scene::RiemannSolver::none) return;
+  const std::string path = "/solver/riemann_solver";
+  const std::string found = "\"low_dissipation\"";
+  if (solver.scheme != scene::Scheme::wcsph)
+    refuse(scene, path, "\"none\" for solver.scheme " + quoted_scheme(solver.scheme), found);
+  if (solver.density != scene::DensityMethod::continuity)
+    refuse(scene, path, "\"none\" with summation density (the Riemann scheme integrates the continuity equation)",
+           found);
+  if (fluids > 1) refuse(scene, path, "\"none\" for a scene with several fluid materials", found);
+  if (solver.artificial_stress > 0) refuse(scene, path, "\"none\" with an artificial stress", found);
+  for (std::size_t k = 0; k < scene.walls.obstacles.size(); ++k) {
+    if (scene.walls.obstacles[k].body)
+      refuse(scene, path, "\"none\" in a scene with a rigid body (/walls/obstacles/" + std::to_string(k) + "/body)",
+             found);
+  }
+}
+
 /// A crowd (docs/crowds.md) walks on the floor plane among fixed walls; the crowd scheme moves
 /// agents and nothing else, and agents only the crowd scheme.
 void check_crowd(const scene::Scene& scene) {
@@ -105,6 +132,7 @@ void check_capabilities(const scene::Scene& scene) {
   check_phases(scene, fluids);
   check_surface_tension(scene, fluids);
   check_bodies(scene);
+  check_riemann(scene, fluids);
   // The phase index exists in multiphase scenes only.
   for (std::size_t k = 0; k < scene.output.fields.size(); ++k) {
     if (scene.output.fields[k] == "phase" && fluids < 2)

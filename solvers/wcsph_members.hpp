@@ -21,6 +21,7 @@
 #include "passes/inflow.hpp"
 #include "passes/momentum.hpp"
 #include "passes/particle_shifting.hpp"
+#include "passes/riemann.hpp"
 #include "passes/surface_tension.hpp"
 #include "passes/wall_state.hpp"
 #include "simulation_setup.hpp"
@@ -277,11 +278,40 @@ void Wcsph<D>::compute_acceleration(const Vector<D>& gravity) {
       passes::viscosity_settings(scene_, eos_.sound_speed(), kinematic_viscosity_, smoothing_length_);
   const passes::ArtificialStressSettings stress{static_cast<Real>(scene_.solver.artificial_stress),
                                                 1 / kernel_.value(static_cast<Real>(scene_.particle_spacing))};
+  if (scene_.solver.riemann_solver == scene::RiemannSolver::low_dissipation) {
+    compute_riemann_acceleration(viscosity, gravity);
+    return;
+  }
   const passes::MultiphaseTerms multiphase = multiphase_terms();
   const std::span<Real> scratch =
       phases_ ? std::span<Real>{} : interactions_.pass_scratch(fluid_.size() + interactions_.contact_particle_count());
   passes::fluid_acceleration<D>(kernel_, viscosity, stress, fluid_, fluid_fields_, interactions_, gravity, scratch,
                                 phases_ ? &multiphase : nullptr);
+}
+
+template <int D>
+void Wcsph<D>::compute_riemann_acceleration(const passes::ViscositySettings& viscosity, const Vector<D>& gravity) {
+  const passes::RiemannSettings<D> riemann{eos_.sound_speed(), eos_.rest_density(), gravity};
+  std::span<const Real> correction;
+  if (scene_.solver.kernel_gradient_correction) {
+    const std::span<Real> table = interactions_.pass_scratch(fluid_.size() * D * D);
+    passes::kernel_gradient_correction<D>(kernel_, fluid_, fluid_fields_, interactions_, table);
+    correction = table;
+  }
+  // The viscosity model and the correction picked once per pass, outside the particle loop.
+  const auto run = [&]<scene::ViscosityModel Model>() {
+    if (correction.empty()) {
+      passes::riemann_momentum<D, Model, false>(kernel_, viscosity, riemann, fluid_, fluid_fields_, interactions_, {});
+    } else {
+      passes::riemann_momentum<D, Model, true>(kernel_, viscosity, riemann, fluid_, fluid_fields_, interactions_,
+                                               correction);
+    }
+  };
+  if (viscosity.model == scene::ViscosityModel::artificial) {
+    run.template operator()<scene::ViscosityModel::artificial>();
+  } else {
+    run.template operator()<scene::ViscosityModel::laminar>();
+  }
 }
 
 template <int D>
@@ -342,6 +372,11 @@ void Wcsph<D>::hold_free_surface_density() {
 
 template <int D>
 void Wcsph<D>::compute_density_rate(const Vector<D>& gravity) {
+  if (scene_.solver.riemann_solver == scene::RiemannSolver::low_dissipation) {
+    const passes::RiemannSettings<D> riemann{eos_.sound_speed(), eos_.rest_density(), gravity};
+    passes::riemann_continuity<D>(kernel_, riemann, fluid_, fluid_fields_, interactions_);
+    return;
+  }
   const passes::DensityDiffusion<D> diffusion{eos_, gravity, static_cast<Real>(scene_.solver.delta_sph),
                                               eos_.sound_speed()};
   passes::continuity<D>(kernel_, fluid_, fluid_fields_, interactions_, diffusion.delta > 0 ? &diffusion : nullptr);

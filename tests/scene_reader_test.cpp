@@ -474,6 +474,28 @@ TEST(SceneReader, ReadsTheStabilityOptions) {
   EXPECT_EQ(defaults.solver.max_mach_number, 1);
 }
 
+TEST(SceneReader, ReadsTheRiemannSolverAndKernelGradientCorrection) {
+  json document = with(full_2d_scene(), "/solver/riemann_solver", "low_dissipation");
+  document = with(document, "/solver/kernel_gradient_correction", true);
+  const scene::Scene s = parse(document);
+  EXPECT_EQ(s.solver.riemann_solver, scene::RiemannSolver::low_dissipation);
+  EXPECT_TRUE(s.solver.kernel_gradient_correction);
+  EXPECT_NO_THROW(check_capabilities(s));  // wcsph, continuity density, one fluid, no body
+  const scene::Scene defaults = parse(minimal_scene());
+  EXPECT_EQ(defaults.solver.riemann_solver, scene::RiemannSolver::none);
+  EXPECT_FALSE(defaults.solver.kernel_gradient_correction);
+  expect_refused(with(full_2d_scene(), "/solver/riemann_solver", "hllc"), "/solver/riemann_solver",
+                 "one of \"none\", \"low_dissipation\"");
+  expect_refused(with(full_2d_scene(), "/solver/kernel_gradient_correction", 1), "/solver/kernel_gradient_correction",
+                 "true or false");
+  expect_unsupported(with(document, "/solver/density", "summation"), "/solver/riemann_solver",
+                     "\"none\" with summation density");
+  expect_unsupported(with(document, "/solver/scheme", "dfsph"), "/solver/riemann_solver",
+                     "\"none\" for solver.scheme \"dfsph\"");
+  expect_unsupported(with(full_2d_scene(), "/solver/kernel_gradient_correction", true),
+                     "/solver/kernel_gradient_correction", "false without solver.riemann_solver");
+}
+
 TEST(SceneReader, ReadsTheNeighbourSkin) {
   EXPECT_EQ(parse(with(full_2d_scene(), "/solver/neighbor_skin", 0.5)).solver.neighbor_skin, 0.5);
   EXPECT_EQ(parse(with(full_2d_scene(), "/solver/neighbor_skin", 0)).solver.neighbor_skin, 0.0);

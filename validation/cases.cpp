@@ -37,8 +37,9 @@ const Case* find_case(std::string_view name) {
 }
 
 const std::vector<std::string>& scheme_names() {
-  static const std::vector<std::string> names{"wcsph",    "wcsph_continuity",       "dfsph", "iisph", "dfsph_cg",
-                                              "iisph_cg", std::string(crowd_scheme)};
+  static const std::vector<std::string> names{
+      "wcsph", "wcsph_continuity", "wcsph_riemann", "wcsph_riemann_kgc",      "dfsph",
+      "iisph", "dfsph_cg",         "iisph_cg",      std::string(crowd_scheme)};
   return names;
 }
 

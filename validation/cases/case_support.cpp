@@ -19,6 +19,10 @@ void apply_variant(scene::Scene& scene, const Variant& variant) {
   } else if (variant.scheme == "wcsph_continuity") {
     scene.solver.density = scene::DensityMethod::continuity;
     scene.solver.delta_sph = 0.1;
+  } else if (variant.scheme == "wcsph_riemann" || variant.scheme == "wcsph_riemann_kgc") {
+    scene.solver.density = scene::DensityMethod::continuity;
+    scene.solver.riemann_solver = scene::RiemannSolver::low_dissipation;
+    scene.solver.kernel_gradient_correction = variant.scheme.ends_with("_kgc");
   } else if (variant.scheme == "dfsph" || variant.scheme == "dfsph_cg") {
     scene.solver.scheme = scene::Scheme::dfsph;
   } else if (variant.scheme == "iisph" || variant.scheme == "iisph_cg") {

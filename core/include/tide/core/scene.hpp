@@ -179,6 +179,12 @@ struct SurfaceTension {
   bool unlike_attraction = true;
 };
 
+/// The pair pressure and velocity of WCSPH (docs/scenes.md, solver.riemann_solver).
+enum class RiemannSolver {
+  none,             // Monaghan's symmetric pressure term, continuity with δ-SPH
+  low_dissipation,  // Zhang, Hu & Adams 2017: a linearised Riemann problem per pair, limited dissipation
+};
+
 /// How DFSPH and IISPH solve for the pressure (docs/scenes.md, solver.pressure_solver).
 enum class PressureSolver {
   jacobi,               // projected Jacobi sweeps (the density solve Chebyshev-accelerated)
@@ -190,7 +196,9 @@ struct Solver {
   EquationOfState equation_of_state = EquationOfState::tait;
   double tait_exponent = 7;
   DensityMethod density = DensityMethod::summation;
-  double delta_sph = 0.1;  // δ-SPH diffusion coefficient (continuity density only)
+  double delta_sph = 0.1;                              // δ-SPH diffusion coefficient (continuity density only)
+  RiemannSolver riemann_solver = RiemannSolver::none;  // wcsph with continuity density only
+  bool kernel_gradient_correction = false;             // riemann_solver low_dissipation only: L_i ∇W_ij
   ViscosityModel viscosity = ViscosityModel::artificial;
   double alpha = 0.02;                  // Monaghan artificial viscosity, linear term
   double beta = 0;                      // Monaghan artificial viscosity, quadratic term

@@ -27,6 +27,7 @@ namespace tide {
 namespace passes {
 struct MultiphaseTerms;
 struct SurfaceTensionSettings;
+struct ViscositySettings;
 }  // namespace passes
 
 /// Weakly compressible SPH: density by summation (or continuity with δ-SPH diffusion), Tait or
@@ -108,6 +109,9 @@ class Wcsph final : public Simulation<D> {
   void apply_equation_of_state();
   void extrapolate_wall_state(const Vector<D>& gravity);
   void compute_acceleration(const Vector<D>& gravity);
+  /// The momentum pass of solver.riemann_solver "low_dissipation" (passes/riemann.hpp), with the
+  /// kernel gradient correction where solver.kernel_gradient_correction asks for it.
+  void compute_riemann_acceleration(const passes::ViscositySettings& viscosity, const Vector<D>& gravity);
   /// The fluid's force on every body particle, summed per body (RigidBodies::sum_forces).
   void compute_body_forces();
   /// The phase field, the phases and the wall volume for the multiphase passes; empty terms for a

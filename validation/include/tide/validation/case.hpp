@@ -87,7 +87,9 @@ const Case* find_case(std::string_view name);
 const std::vector<std::string>& scheme_names();
 
 /// The schemes the study runs when none are named: scheme_names() less the `_cg` variants, DFSPH
-/// and IISPH with solver.pressure_solver "conjugate_gradients", which are run by name.
+/// and IISPH with solver.pressure_solver "conjugate_gradients", and `wcsph_riemann` (continuity
+/// density with solver.riemann_solver "low_dissipation") and `wcsph_riemann_kgc` (that with
+/// solver.kernel_gradient_correction), which are run by name.
 const std::vector<std::string>& default_scheme_names();
 
 }  // namespace tide::validation
