@@ -5,6 +5,11 @@
 # not rebuild more than it did without them. TIDE_PRECOMPILE_HEADERS=OFF turns them off, e.g. to
 # check that every source includes what it uses.
 option(TIDE_PRECOMPILE_HEADERS "Precompile the external headers every target includes" ON)
+# The test executables alone (GoogleTest's header is the largest they parse): CI's single-precision
+# build keeps the libraries, apps and tools without precompiled headers, so that they are checked
+# for what they include, and the tests with them.
+option(TIDE_PRECOMPILE_TEST_HEADERS "Precompile them for the test executables (default: TIDE_PRECOMPILE_HEADERS)"
+       ${TIDE_PRECOMPILE_HEADERS})
 
 set(TIDE_PRECOMPILED_HEADERS
   <Eigen/Core>
@@ -24,12 +29,20 @@ set(TIDE_PRECOMPILED_HEADERS
   <variant>
   <vector>)
 
-# tide_precompile_headers(target [REUSE_FROM other] [EXTRA headers...]): gives target the
+# tide_precompile_headers(target [TEST] [REUSE_FROM other] [EXTRA headers...]): gives target the
 # precompiled headers (with EXTRA ones, e.g. GoogleTest's), its own or those of `other`, which
-# must be compiled with the same flags (the test executables share one).
+# must be compiled with the same flags (the test executables share one). TEST: a test executable,
+# which follows TIDE_PRECOMPILE_TEST_HEADERS.
 function(tide_precompile_headers target)
-  cmake_parse_arguments(PARSE_ARGV 1 pch "" "REUSE_FROM" "EXTRA")
-  if(NOT TIDE_PRECOMPILE_HEADERS)
+  cmake_parse_arguments(PARSE_ARGV 1 pch "TEST" "REUSE_FROM" "EXTRA")
+  if(pch_TEST)
+    if(NOT TIDE_PRECOMPILE_TEST_HEADERS)
+      return()
+    endif()
+    if(NOT TIDE_PRECOMPILE_HEADERS)
+      target_link_libraries(${target} PRIVATE tide_precompiled_header_warnings)
+    endif()
+  elseif(NOT TIDE_PRECOMPILE_HEADERS)
     return()
   endif()
   if(pch_REUSE_FROM)
@@ -43,8 +56,13 @@ endfunction()
 # header when it warns after inlining: -Warray-bounds and -Wstringop-overread then report the
 # library's known false positives (a memcpy "out of the bounds" of a moved std::string, e.g. in
 # push_back of a scene::Obstacle), which the same file compiled without the precompiled header
-# does not. The builds with precompiled headers leave those two warnings out; CI's
-# single-precision build compiles every file without them and keeps them (scripts/check.sh).
-if(TIDE_PRECOMPILE_HEADERS AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-  target_compile_options(tide_warnings INTERFACE -Wno-array-bounds -Wno-stringop-overread)
+# does not. The targets with precompiled headers leave those two warnings out; CI's
+# single-precision build compiles every file but the tests' without them and keeps them
+# (scripts/check.sh).
+add_library(tide_precompiled_header_warnings INTERFACE)
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+  target_compile_options(tide_precompiled_header_warnings INTERFACE -Wno-array-bounds -Wno-stringop-overread)
+endif()
+if(TIDE_PRECOMPILE_HEADERS)
+  target_link_libraries(tide_warnings INTERFACE tide_precompiled_header_warnings)
 endif()
