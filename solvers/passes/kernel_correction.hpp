@@ -7,10 +7,9 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <span>
-#include <utility>
-#include <vector>
 
 #include "neighbor_walk.hpp"
+#include "position_divergence.hpp"
 #include "tide/core/kernels/runtime_kernel.hpp"
 #include "tide/solvers/interactions.hpp"
 #include "tide/solvers/particle_fields.hpp"
@@ -46,32 +45,22 @@ inline constexpr Real min_correction_determinant = Real(0.1);
 template <int D>
 void kernel_gradient_correction(const RuntimeKernel<D>& kernel, const ParticleSet<D>& fluid, const FluidFields<D>& f,
                                 const Interactions<D>& interactions, std::span<Real> table) {
-  const auto x = fluid[f.position];
   const auto mass = fluid[f.mass];
   const auto density = fluid[f.density];
-  std::vector<std::pair<std::span<const Real>, std::span<const Real>>> contacts;  // masses, densities
-  for (std::size_t k = 0; k < interactions.contact_count(); ++k) {
-    const Contact<D>& contact = interactions.contact(k);
-    contacts.emplace_back(contact.particles()[contact.fields().mass], contact.particles()[contact.fields().density]);
-  }
-  for_each_fluid_particle<D>(
-      interactions, x, CorrectionOutput<D>{table}, [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
-        CorrectionMatrix<D> m = CorrectionMatrix<D>::Zero();
-        const auto add = [&](Real volume, const Vector<D>& x_ij, Real r2) {
-          const Vector<D> grad_w = kernel.gradient(x_ij, std::sqrt(r2));
-          m -= volume * grad_w * x_ij.transpose();
-        };
-        neighbors.fluid_pairs([&](Index j, const Vector<D>& x_ij, Real r2) {
-          if (j == i) return;
-          add(mass[j] / density[j], x_ij, r2);
-        });
-        neighbors.contacts([&](const ContactNeighbors<D>& contact) {
-          const auto& [masses, densities] = contacts[contact.number()];
-          contact.pairs([&](Index b, const Vector<D>& x_ib, Real r2) { add(masses[b] / densities[b], x_ib, r2); });
-        });
-        if (!(m.determinant() >= min_correction_determinant)) return CorrectionMatrix<D>::Identity().eval();
-        return m.inverse().eval();
-      });
+  const auto volumes = detail::contact_volumes(interactions);
+  for_each_fluid_particle<D>(interactions, fluid[f.position], CorrectionOutput<D>{table},
+                             [&](std::size_t i, const FluidNeighbors<D>& neighbors) {
+                               CorrectionMatrix<D> m = CorrectionMatrix<D>::Zero();
+                               detail::for_each_volume_neighbor<D>(i, neighbors, mass, density, volumes,
+                                                                   [&](Real volume, const Vector<D>& x_ij, Real r2) {
+                                                                     const Vector<D> grad_w =
+                                                                         kernel.gradient(x_ij, std::sqrt(r2));
+                                                                     m -= volume * grad_w * x_ij.transpose();
+                                                                   });
+                               if (!(m.determinant() >= min_correction_determinant))
+                                 return CorrectionMatrix<D>::Identity().eval();
+                               return m.inverse().eval();
+                             });
 }
 
 }  // namespace tide::passes
